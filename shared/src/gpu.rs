@@ -1,0 +1,203 @@
+//! GPU setup: instance, adapter and device (honouring `WGPU_BACKEND` and `--backend`), the capture of
+//! every wgpu error, and the render targets the framework owns.
+
+use std::sync::{Arc, Mutex};
+
+use anyhow::{Context, Result, bail};
+
+/// The depth-stencil format of every lesson: 24 bits of depth and 8 bits of stencil, D3D's D24S8.
+pub const DEPTH_STENCIL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24PlusStencil8;
+
+/// The colour format of headless renders and screenshots: 8 bits per channel, sRGB-encoded.
+pub const HEADLESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// The device and queue, and the errors wgpu reported on them.
+pub struct Gpu {
+    pub instance: wgpu::Instance,
+    pub adapter: wgpu::Adapter,
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    errors: Arc<Mutex<Vec<String>>>,
+}
+
+/// The backends to try, in turn: `--backend` if given, else `WGPU_BACKEND`; else first the primary
+/// ones (Vulkan, Metal, DX12), and only if none has an adapter, OpenGL (asking GL first would print
+/// EGL errors on machines that have no GL driver, and GL cannot read depth or stencil back).
+pub fn backend_choices(backend: Option<&str>) -> Result<Vec<wgpu::Backends>> {
+    let (source, list) = match backend {
+        Some(list) => ("--backend", list.to_string()),
+        None => match std::env::var("WGPU_BACKEND") {
+            Ok(list) => ("WGPU_BACKEND", list),
+            Err(_) => return Ok(vec![wgpu::Backends::PRIMARY, wgpu::Backends::GL]),
+        },
+    };
+    let mut backends = wgpu::Backends::empty();
+    for name in list.split(',').map(|name| name.trim().to_lowercase()) {
+        backends |= match name.as_str() {
+            "vulkan" | "vk" => wgpu::Backends::VULKAN,
+            "gl" | "gles" | "opengl" => wgpu::Backends::GL,
+            "metal" | "mtl" => wgpu::Backends::METAL,
+            "dx12" | "d3d12" => wgpu::Backends::DX12,
+            _ => bail!("{source}: unknown backend `{name}`: choose vulkan, gl, metal or dx12"),
+        };
+    }
+    Ok(vec![backends])
+}
+
+/// A new instance for the chosen backends. A window passes its display handle (the GL backend needs it).
+pub fn instance(
+    backends: wgpu::Backends,
+    display: Option<Box<dyn wgpu::wgt::WgpuHasDisplayHandle>>,
+) -> wgpu::Instance {
+    let descriptor = match display {
+        Some(display) => wgpu::InstanceDescriptor::new_with_display_handle_from_env(display),
+        None => wgpu::InstanceDescriptor::new_without_display_handle_from_env(),
+    };
+    wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends,
+        ..descriptor
+    })
+}
+
+impl Gpu {
+    /// Takes an adapter (one that can present to `surface`, if given) and opens its device.
+    pub fn new(
+        instance: wgpu::Instance,
+        backends: wgpu::Backends,
+        surface: Option<&wgpu::Surface<'_>>,
+        verbose: bool,
+    ) -> Result<Self> {
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: surface,
+            apply_limit_buckets: false,
+        }))
+        .map_err(|_| {
+            anyhow::anyhow!(
+                "no GPU adapter found (tried {:?}); on Linux without a GPU install Mesa's software Vulkan \
+                 driver (`sudo apt-get install mesa-vulkan-drivers`), or pick another backend with \
+                 --backend or WGPU_BACKEND",
+                backends
+            )
+        })?;
+        let info = adapter.get_info();
+        if verbose {
+            eprintln!(
+                "adapter: {} ({:?}, {:?} backend, driver {} {})",
+                info.name, info.device_type, info.backend, info.driver, info.driver_info
+            );
+        }
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("workbook device"),
+            required_features: wgpu::Features::empty(),
+            required_limits: adapter.limits(),
+            experimental_features: wgpu::ExperimentalFeatures::disabled(),
+            memory_hints: wgpu::MemoryHints::MemoryUsage,
+            trace: wgpu::Trace::Off,
+        }))
+        .with_context(|| format!("could not open the device of adapter `{}`", info.name))?;
+        let errors = Arc::new(Mutex::new(Vec::new()));
+        let sink = errors.clone();
+        device.on_uncaptured_error(Arc::new(move |error: wgpu::Error| {
+            let line = one_line(&error.to_string());
+            log::error!("wgpu: {line}");
+            sink.lock().unwrap_or_else(|e| e.into_inner()).push(line);
+        }));
+        Ok(Self {
+            instance,
+            adapter,
+            device,
+            queue,
+            errors,
+        })
+    }
+
+    /// A device for headless work: no window, no surface.
+    pub fn headless(backend: Option<&str>, verbose: bool) -> Result<Self> {
+        let mut result = Err(anyhow::anyhow!("no backend to try"));
+        for backends in backend_choices(backend)? {
+            result = Self::new(instance(backends, None), backends, None, verbose);
+            if result.is_ok() {
+                break;
+            }
+        }
+        result
+    }
+
+    /// Fails with the first wgpu error reported so far (validation errors above all), if any.
+    pub fn check_errors(&self) -> Result<()> {
+        let errors = std::mem::take(&mut *self.errors.lock().unwrap_or_else(|e| e.into_inner()));
+        match errors.first() {
+            None => Ok(()),
+            Some(first) if errors.len() == 1 => bail!("wgpu reported an error: {first}"),
+            Some(first) => bail!("wgpu reported {} errors, the first: {first}", errors.len()),
+        }
+    }
+
+    /// Whether depth and stencil contents can be copied to a buffer (not on the GL backend).
+    pub fn can_copy_depth_stencil(&self) -> bool {
+        self.adapter
+            .get_downlevel_capabilities()
+            .flags
+            .contains(wgpu::DownlevelFlags::DEPTH_TEXTURE_AND_BUFFER_COPIES)
+    }
+
+    /// The largest width or height a target may have on this device.
+    pub fn max_size(&self) -> u32 {
+        self.device.limits().max_texture_dimension_2d
+    }
+}
+
+/// wgpu's messages span several indented lines; errors here are one line.
+fn one_line(message: &str) -> String {
+    message.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The depth-stencil buffer the framework owns, with the views lessons use.
+pub struct DepthStencil {
+    pub texture: wgpu::Texture,
+    /// Both aspects: the attachment of every render pass.
+    pub view: wgpu::TextureView,
+    /// The depth aspect alone, for shaders that read the depth buffer (`view=depth`).
+    pub depth_only: wgpu::TextureView,
+}
+
+impl DepthStencil {
+    pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("depth-stencil buffer"),
+            size: wgpu::Extent3d {
+                width,
+                height,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_STENCIL_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let view = texture.create_view(&wgpu::TextureViewDescriptor {
+            label: Some("depth-stencil view"),
+            ..Default::default()
+        });
+        let depth_only = texture.create_view(&wgpu::TextureViewDescriptor {
+            label: Some("depth-only view"),
+            aspect: wgpu::TextureAspect::DepthOnly,
+            ..Default::default()
+        });
+        Self {
+            texture,
+            view,
+            depth_only,
+        }
+    }
+
+    pub fn size(&self) -> (u32, u32) {
+        (self.texture.width(), self.texture.height())
+    }
+}

@@ -1,0 +1,236 @@
+//! The headless runner: one frame at W×H into a texture, read back as an image, and on request the
+//! stencil and depth buffers too (where the backend can copy them; the GL backend cannot).
+
+use anyhow::{Context, Result, bail};
+use image::RgbaImage;
+
+use crate::camera::Camera;
+use crate::gpu::{Gpu, HEADLESS_FORMAT};
+use crate::knobs::Knobs;
+use crate::lesson::Lesson;
+use crate::runner::Runner;
+use crate::scene::SceneOptions;
+use crate::views::DEPTH_COPY_FORMAT;
+
+/// What to render.
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub width: u32,
+    pub height: u32,
+    pub knobs: Knobs,
+    pub camera: Camera,
+    pub scene: SceneOptions,
+    /// Also read back the stencil buffer.
+    pub read_stencil: bool,
+    /// Also read back the depth buffer.
+    pub read_depth: bool,
+    pub backend: Option<String>,
+    pub verbose: bool,
+}
+
+impl Request {
+    /// The default picture of lesson `L` at 1280×720, changed by `name=value` knob settings.
+    pub fn new<L: Lesson>(settings: &[&str]) -> Result<Self> {
+        Ok(Self {
+            width: 1280,
+            height: 720,
+            knobs: Knobs::from_settings(L::KNOBS, settings)?,
+            camera: Camera::default(),
+            scene: SceneOptions::default(),
+            read_stencil: false,
+            read_depth: false,
+            backend: None,
+            verbose: false,
+        })
+    }
+}
+
+/// What came back.
+#[derive(Debug, Clone)]
+pub struct Capture {
+    /// The colours, alpha set to opaque as a window shows them.
+    pub color: RgbaImage,
+    /// One stencil value per pixel, rows top to bottom.
+    pub stencil: Option<Vec<u8>>,
+    /// One depth value per pixel (0 near .. 1 far), rows top to bottom.
+    pub depth: Option<Vec<f32>>,
+}
+
+impl Capture {
+    pub fn width(&self) -> u32 {
+        self.color.width()
+    }
+    pub fn stencil_at(&self, x: u32, y: u32) -> Option<u8> {
+        let stencil = self.stencil.as_ref()?;
+        Some(stencil[(y * self.width() + x) as usize])
+    }
+    pub fn depth_at(&self, x: u32, y: u32) -> Option<f32> {
+        let depth = self.depth.as_ref()?;
+        Some(depth[(y * self.width() + x) as usize])
+    }
+}
+
+/// Renders one frame of lesson `L`.
+pub fn render<L: Lesson>(request: &Request) -> Result<Capture> {
+    let gpu = Gpu::headless(request.backend.as_deref(), request.verbose)?;
+    check_size(&gpu, request.width, request.height)?;
+    if (request.read_stencil || request.read_depth) && !gpu.can_copy_depth_stencil() {
+        bail!(
+            "this backend ({:?}) cannot copy depth or stencil to a buffer; use Vulkan",
+            gpu.adapter.get_info().backend
+        );
+    }
+    let size = (request.width, request.height);
+    let runner = Runner::<L>::new(
+        gpu,
+        HEADLESS_FORMAT,
+        &request.scene,
+        request.knobs.clone(),
+        request.camera,
+        size,
+    )?;
+    let device = &runner.gpu.device;
+    let color = target(device, "headless colour target", HEADLESS_FORMAT, size);
+    let color_view = color.create_view(&Default::default());
+    let mut encoder = runner.record(&color_view)?;
+
+    let mut readbacks = vec![Readback::new(
+        device,
+        &mut encoder,
+        &color,
+        wgpu::TextureAspect::All,
+        4,
+    )];
+    if request.read_stencil {
+        let stencil = &runner.depth_stencil.texture;
+        let aspect = wgpu::TextureAspect::StencilOnly;
+        readbacks.push(Readback::new(device, &mut encoder, stencil, aspect, 1));
+    }
+    if request.read_depth {
+        let depth_copy = target(device, "depth copy", DEPTH_COPY_FORMAT, size);
+        runner.copy_depth(&mut encoder, &depth_copy.create_view(&Default::default()))?;
+        let aspect = wgpu::TextureAspect::All;
+        readbacks.push(Readback::new(device, &mut encoder, &depth_copy, aspect, 4));
+    }
+    runner.gpu.queue.submit([encoder.finish()]);
+    let mut bytes = readbacks
+        .into_iter()
+        .map(|readback| readback.read(device))
+        .collect::<Result<Vec<_>>>()?
+        .into_iter();
+    runner.gpu.check_errors()?;
+
+    let mut color = RgbaImage::from_raw(request.width, request.height, bytes.next().unwrap())
+        .context("colour readback has the wrong size")?;
+    for pixel in color.pixels_mut() {
+        pixel.0[3] = 255;
+    }
+    let stencil = request.read_stencil.then(|| bytes.next().unwrap());
+    let depth = request
+        .read_depth
+        .then(|| bytemuck::pod_collect_to_vec(&bytes.next().unwrap()));
+    Ok(Capture {
+        color,
+        stencil,
+        depth,
+    })
+}
+
+/// Refuses sizes the device cannot make.
+pub fn check_size(gpu: &Gpu, width: u32, height: u32) -> Result<()> {
+    let max = gpu.max_size();
+    if width > max || height > max {
+        bail!("size {width}x{height} is larger than this GPU allows ({max} pixels a side)");
+    }
+    Ok(())
+}
+
+fn target(
+    device: &wgpu::Device,
+    label: &str,
+    format: wgpu::TextureFormat,
+    (width, height): (u32, u32),
+) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size: wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    })
+}
+
+/// A texture copied into a mappable buffer, rows padded to 256 bytes as wgpu requires.
+struct Readback {
+    buffer: wgpu::Buffer,
+    row_bytes: u32,
+    padded_row_bytes: u32,
+    height: u32,
+}
+
+impl Readback {
+    fn new(
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        texture: &wgpu::Texture,
+        aspect: wgpu::TextureAspect,
+        bytes_per_texel: u32,
+    ) -> Self {
+        let (width, height) = (texture.width(), texture.height());
+        let row_bytes = width * bytes_per_texel;
+        let padded_row_bytes = row_bytes.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback buffer"),
+            size: (padded_row_bytes * height) as u64,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded_row_bytes),
+                    rows_per_image: Some(height),
+                },
+            },
+            texture.size(),
+        );
+        Self {
+            buffer,
+            row_bytes,
+            padded_row_bytes,
+            height,
+        }
+    }
+
+    /// Waits for the copy and returns the rows without their padding.
+    fn read(self, device: &wgpu::Device) -> Result<Vec<u8>> {
+        let slice = self.buffer.slice(..);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .context("waiting for the GPU failed")?;
+        let mapped = slice
+            .get_mapped_range()
+            .context("reading back from the GPU failed")?;
+        let mut bytes = Vec::with_capacity((self.row_bytes * self.height) as usize);
+        for row in mapped.chunks(self.padded_row_bytes as usize) {
+            bytes.extend_from_slice(&row[..self.row_bytes as usize]);
+        }
+        Ok(bytes)
+    }
+}

@@ -1,0 +1,248 @@
+//! Meshes: the vertex layout, OBJ files through `tobj` (normals computed when a file has none, placed
+//! and scaled to fit), the room's boxes and quads, and their GPU buffers.
+
+use std::path::Path;
+
+use anyhow::{Context, Result, bail};
+use glam::{Vec2, Vec3};
+use wgpu::util::DeviceExt;
+
+/// One vertex as every shader of the workbook reads it.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct Vertex {
+    pub position: [f32; 3],
+    pub normal: [f32; 3],
+    pub uv: [f32; 2],
+}
+
+impl Vertex {
+    pub const ATTRIBUTES: [wgpu::VertexAttribute; 3] =
+        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2];
+
+    pub const LAYOUT: wgpu::VertexBufferLayout<'static> = wgpu::VertexBufferLayout {
+        array_stride: std::mem::size_of::<Vertex>() as wgpu::BufferAddress,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &Self::ATTRIBUTES,
+    };
+
+    fn new(position: Vec3, normal: Vec3, uv: Vec2) -> Self {
+        Self {
+            position: position.into(),
+            normal: normal.into(),
+            uv: uv.into(),
+        }
+    }
+}
+
+/// A triangle mesh on the CPU; triangles are counter-clockwise seen from outside.
+#[derive(Debug, Clone, Default)]
+pub struct MeshData {
+    pub vertices: Vec<Vertex>,
+    pub indices: Vec<u32>,
+}
+
+impl MeshData {
+    /// Reads an OBJ file: every object in it, triangulated, as one mesh, centred on the origin and
+    /// scaled so that its largest side is 1. Vertex normals are computed when the file has none.
+    pub fn load_obj(path: &Path) -> Result<Self> {
+        let shown = path.display();
+        let bytes = std::fs::read(path).with_context(|| format!("cannot read model `{shown}`"))?;
+        let mut reader = std::io::BufReader::new(bytes.as_slice());
+        let options = tobj::LoadOptions {
+            single_index: true,
+            triangulate: true,
+            ignore_points: true,
+            ignore_lines: true,
+        };
+        // Materials are not used: every model is drawn with the skull's material.
+        let (models, _) = tobj::load_obj_buf(&mut reader, &options, |_| {
+            Ok((Vec::new(), Default::default()))
+        })
+        .map_err(|error| anyhow::anyhow!("model `{shown}` is not a valid OBJ file: {error}"))?;
+
+        let mut mesh = MeshData::default();
+        let mut all_have_normals = true;
+        for model in &models {
+            let m = &model.mesh;
+            let base = mesh.vertices.len() as u32;
+            let count = m.positions.len() / 3;
+            let has_normals = m.normals.len() == m.positions.len();
+            all_have_normals &= has_normals;
+            for i in 0..count {
+                let position = Vec3::from_slice(&m.positions[3 * i..3 * i + 3]);
+                let normal = if has_normals {
+                    Vec3::from_slice(&m.normals[3 * i..3 * i + 3])
+                } else {
+                    Vec3::ZERO
+                };
+                let uv = if m.texcoords.len() == 2 * count {
+                    Vec2::from_slice(&m.texcoords[2 * i..2 * i + 2])
+                } else {
+                    Vec2::ZERO
+                };
+                mesh.vertices.push(Vertex::new(position, normal, uv));
+            }
+            for &index in &m.indices {
+                if index as usize >= count {
+                    bail!("model `{shown}` has a face that names a missing vertex");
+                }
+                mesh.indices.push(base + index);
+            }
+        }
+        if mesh.indices.len() < 3 {
+            bail!("model `{shown}` has no triangles: is it an OBJ file?");
+        }
+        if mesh
+            .vertices
+            .iter()
+            .flat_map(|v| v.position)
+            .any(|c| !c.is_finite())
+        {
+            bail!("model `{shown}` has coordinates that are not finite numbers");
+        }
+        if !all_have_normals {
+            mesh.compute_normals();
+        }
+        mesh.fit_unit_box()
+            .with_context(|| format!("model `{shown}` cannot be placed"))?;
+        Ok(mesh)
+    }
+
+    /// Smooth vertex normals: the area-weighted sum of the normals of the triangles around each vertex.
+    pub fn compute_normals(&mut self) {
+        let mut sums = vec![Vec3::ZERO; self.vertices.len()];
+        for triangle in self.indices.chunks_exact(3) {
+            let [a, b, c] =
+                [0, 1, 2].map(|k| Vec3::from(self.vertices[triangle[k] as usize].position));
+            let face = (b - a).cross(c - a); // length = twice the area
+            for &index in triangle {
+                sums[index as usize] += face;
+            }
+        }
+        for (vertex, sum) in self.vertices.iter_mut().zip(sums) {
+            vertex.normal = sum.normalize_or(Vec3::Y).into();
+        }
+    }
+
+    /// Moves the mesh so its bounding box is centred on the origin and scales it so the box's
+    /// largest side is 1: a model far from the origin or of odd size still lands where the skull goes.
+    pub fn fit_unit_box(&mut self) -> Result<()> {
+        let (min, max) = self.bounds();
+        let extent = (max - min).max_element();
+        if !(extent > 1e-6 && extent.is_finite()) {
+            bail!("all its vertices are at one point");
+        }
+        let centre = (min + max) * 0.5;
+        for vertex in &mut self.vertices {
+            vertex.position = ((Vec3::from(vertex.position) - centre) / extent).into();
+        }
+        Ok(())
+    }
+
+    /// The corners of the axis-aligned bounding box.
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        self.vertices.iter().fold(
+            (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+            |(min, max), v| (min.min(v.position.into()), max.max(v.position.into())),
+        )
+    }
+
+    /// Appends a rectangle with corner `origin` spanned by `u` and `v`, facing `u × v`, with texture
+    /// coordinates running from 0 to `repeat`.
+    pub fn add_quad(&mut self, origin: Vec3, u: Vec3, v: Vec3, repeat: Vec2) {
+        let normal = u.cross(v).normalize();
+        let base = self.vertices.len() as u32;
+        let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        for (s, t) in corners {
+            let position = origin + u * s + v * t;
+            // Texture v runs downwards in images, upwards along `v` here.
+            let uv = Vec2::new(s * repeat.x, (1.0 - t) * repeat.y);
+            self.vertices.push(Vertex::new(position, normal, uv));
+        }
+        self.indices
+            .extend([base, base + 1, base + 2, base, base + 2, base + 3]);
+    }
+
+    /// An axis-aligned box centred on the origin, each face textured once.
+    pub fn cuboid(size: Vec3) -> Self {
+        let h = size * 0.5;
+        let mut mesh = Self::default();
+        let (x, y, z) = (Vec3::X * size.x, Vec3::Y * size.y, Vec3::Z * size.z);
+        let one = Vec2::ONE;
+        mesh.add_quad(Vec3::new(-h.x, -h.y, h.z), x, y, one); // front (+z)
+        mesh.add_quad(Vec3::new(h.x, -h.y, -h.z), -x, y, one); // back (-z)
+        mesh.add_quad(Vec3::new(h.x, -h.y, h.z), -z, y, one); // right (+x)
+        mesh.add_quad(Vec3::new(-h.x, -h.y, -h.z), z, y, one); // left (-x)
+        mesh.add_quad(Vec3::new(-h.x, h.y, h.z), x, -z, one); // top (+y)
+        mesh.add_quad(Vec3::new(-h.x, -h.y, -h.z), x, z, one); // bottom (-y)
+        mesh
+    }
+
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+}
+
+/// A mesh in GPU buffers.
+pub struct GpuMesh {
+    pub vertices: wgpu::Buffer,
+    pub indices: wgpu::Buffer,
+    pub index_count: u32,
+}
+
+impl GpuMesh {
+    pub fn new(device: &wgpu::Device, name: &str, data: &MeshData) -> Self {
+        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(&format!("{name} vertices")),
+            contents: bytemuck::cast_slice(&data.vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(&format!("{name} indices")),
+            contents: bytemuck::cast_slice(&data.indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        Self {
+            vertices,
+            indices,
+            index_count: data.indices.len() as u32,
+        }
+    }
+
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..self.index_count, 0, 0..1);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cuboid_faces_point_outwards() {
+        let mesh = MeshData::cuboid(Vec3::new(1.0, 2.0, 3.0));
+        for triangle in mesh.indices.chunks_exact(3) {
+            let [a, b, c] =
+                [0, 1, 2].map(|k| Vec3::from(mesh.vertices[triangle[k] as usize].position));
+            let winding_normal = (b - a).cross(c - a);
+            let centre = (a + b + c) / 3.0;
+            assert!(winding_normal.dot(centre) > 0.0, "a face points inwards");
+            assert!(winding_normal.dot(mesh.vertices[triangle[0] as usize].normal.into()) > 0.0);
+        }
+    }
+
+    #[test]
+    fn fit_centres_and_scales() {
+        let mut mesh = MeshData::cuboid(Vec3::new(10.0, 20.0, 40.0));
+        for v in &mut mesh.vertices {
+            v.position = (Vec3::from(v.position) + Vec3::new(100.0, -50.0, 7.0)).into();
+        }
+        mesh.fit_unit_box().unwrap();
+        let (min, max) = mesh.bounds();
+        assert!((min + max).length() < 1e-5);
+        assert!(((max - min).max_element() - 1.0).abs() < 1e-6);
+    }
+}

@@ -1,0 +1,503 @@
+//! The room of Luna's Mirror demo, shared by every lesson: a checkered floor, a brick wall with the
+//! mirror in it, the mirror, a crate standing partly in front of the mirror and the skull in front of
+//! it, lit by three directional lights with Blinn-Phong materials.
+//!
+//! The room is right-handed with +y up. The mirror lies in the plane z = 0 and faces +z; the room and
+//! the camera are on the +z side.
+
+use std::f32::consts::FRAC_1_SQRT_2;
+use std::path::{Path, PathBuf};
+
+use anyhow::Result;
+use glam::{Mat4, Vec2, Vec3, Vec4};
+use wgpu::util::DeviceExt;
+
+use crate::Gpu;
+use crate::camera::{self, Camera};
+use crate::mesh::{GpuMesh, MeshData, Vertex};
+use crate::states::Recipe;
+use crate::texture;
+
+/// Where the mirror is: the plane z = 0, x in -2.5..2.5, y in 0..4.
+pub const MIRROR_MIN: Vec3 = Vec3::new(-2.5, 0.0, 0.0);
+pub const MIRROR_MAX: Vec3 = Vec3::new(2.5, 4.0, 0.0);
+/// The wall around it: x in -6..6, y in 0..5.
+pub const WALL_HALF_WIDTH: f32 = 6.0;
+pub const WALL_HEIGHT: f32 = 5.0;
+/// The floor runs from the wall to z = 12.
+pub const FLOOR_DEPTH: f32 = 12.0;
+/// The crate: a cube standing on the floor, in front of the mirror's lower right corner.
+pub const CRATE_SIZE: f32 = 1.4;
+pub const CRATE_CENTRE: Vec3 = Vec3::new(2.2, CRATE_SIZE / 2.0, 1.6);
+/// The skull: where its bounding box's centre goes, how tall it is, how far it is turned.
+pub const SKULL_CENTRE: Vec3 = Vec3::new(-0.4, 1.4, 3.2);
+pub const SKULL_SIZE: f32 = 1.5;
+pub const SKULL_YAW_DEGREES: f32 = 35.0;
+/// The sky: Luna's clear colour, LightSteelBlue (sRGB 176, 196, 222).
+pub const CLEAR_SRGB: [u8; 3] = [176, 196, 222];
+
+/// A surface's response to light, as Luna's `Material`.
+#[derive(Debug, Clone, Copy)]
+pub struct Material {
+    pub ambient: Vec3,
+    pub diffuse: Vec3,
+    /// Opacity used when the material is blended (the mirror's is 0.5).
+    pub alpha: f32,
+    pub specular: Vec3,
+    pub shininess: f32,
+}
+
+/// Luna's room and skull material: half ambient, full diffuse, a dull highlight.
+pub const ROOM_MATERIAL: Material = Material {
+    ambient: Vec3::splat(0.5),
+    diffuse: Vec3::ONE,
+    alpha: 1.0,
+    specular: Vec3::splat(0.4),
+    shininess: 16.0,
+};
+pub const SKULL_MATERIAL: Material = Material {
+    ambient: Vec3::splat(0.5),
+    diffuse: Vec3::ONE,
+    alpha: 1.0,
+    specular: Vec3::splat(0.4),
+    shininess: 24.0,
+};
+pub const MIRROR_MATERIAL: Material = Material {
+    alpha: 0.5,
+    ..ROOM_MATERIAL
+};
+
+/// A directional light, as Luna's `DirectionalLight`.
+#[derive(Debug, Clone, Copy)]
+pub struct Light {
+    /// The direction the light travels.
+    pub direction: Vec3,
+    pub ambient: Vec3,
+    pub diffuse: Vec3,
+    pub specular: Vec3,
+}
+
+/// Luna's three lights (a key light from the front right, a fill from the front left, a back light),
+/// with z negated: his room lies on −z in a left-handed frame, ours on +z in a right-handed one.
+pub const LIGHTS: [Light; 3] = [
+    Light {
+        direction: Vec3::new(0.577_35, -0.577_35, -0.577_35),
+        ambient: Vec3::splat(0.2),
+        diffuse: Vec3::splat(0.5),
+        specular: Vec3::splat(0.5),
+    },
+    Light {
+        direction: Vec3::new(-0.577_35, -0.577_35, -0.577_35),
+        ambient: Vec3::ZERO,
+        diffuse: Vec3::splat(0.2),
+        specular: Vec3::splat(0.25),
+    },
+    Light {
+        direction: Vec3::new(0.0, -FRAC_1_SQRT_2, FRAC_1_SQRT_2),
+        ambient: Vec3::ZERO,
+        diffuse: Vec3::splat(0.2),
+        specular: Vec3::ZERO,
+    },
+];
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct LightUniform {
+    direction: Vec4,
+    ambient: Vec4,
+    diffuse: Vec4,
+    specular: Vec4,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct FrameUniform {
+    view_projection: Mat4,
+    eye: Vec4,
+    lights: [LightUniform; 3],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct ObjectUniform {
+    world: Mat4,
+    normal_matrix: Mat4,
+    ambient: Vec4,
+    diffuse: Vec4,
+    specular: Vec4,
+    params: Vec4,
+}
+
+/// What the scene is built from.
+#[derive(Debug, Clone)]
+pub struct SceneOptions {
+    /// The folder with the textures and the skull (the workspace's `assets/` by default).
+    pub assets: PathBuf,
+    /// A model to show instead of the skull.
+    pub model: Option<PathBuf>,
+}
+
+impl Default for SceneOptions {
+    fn default() -> Self {
+        Self {
+            assets: default_assets(),
+            model: None,
+        }
+    }
+}
+
+/// The workspace's `assets/` folder.
+pub fn default_assets() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets")
+}
+
+/// One thing in the room: a mesh, where it stands, what it is made of.
+pub struct Drawable {
+    pub name: &'static str,
+    mesh: GpuMesh,
+    bind_group: wgpu::BindGroup,
+}
+
+impl Drawable {
+    /// Binds this object's transform, material and texture (group 1) and draws it.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(1, &self.bind_group, &[]);
+        self.mesh.draw(pass);
+    }
+}
+
+/// The room on the GPU, and the layouts every lesson's pipelines share.
+pub struct Scene {
+    pub color_format: wgpu::TextureFormat,
+    pub floor: Drawable,
+    pub wall: Drawable,
+    pub mirror: Drawable,
+    pub crate_box: Drawable,
+    pub skull: Drawable,
+    frame_buffer: wgpu::Buffer,
+    frame_bind_group: wgpu::BindGroup,
+    pipeline_layout: wgpu::PipelineLayout,
+    shader: wgpu::ShaderModule,
+    /// `None` where shaders cannot read the depth buffer (the GL backend).
+    pub(crate) depth_view: Option<crate::views::DepthViewPipelines>,
+}
+
+impl Scene {
+    pub fn new(
+        gpu: &Gpu,
+        color_format: wgpu::TextureFormat,
+        options: &SceneOptions,
+    ) -> Result<Self> {
+        let (adapter, device, queue) = (&gpu.adapter, &gpu.device, &gpu.queue);
+        let model_path = options
+            .model
+            .clone()
+            .unwrap_or_else(|| options.assets.join("skull.obj"));
+        let skull_mesh = MeshData::load_obj(&model_path)?;
+        let image = |name: &str| texture::load_png(&options.assets.join(name));
+        let (checker, bricks, ice, crate_image) = (
+            image("checker.png")?,
+            image("bricks.png")?,
+            image("ice.png")?,
+            image("crate.png")?,
+        );
+
+        let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("frame bind group layout"),
+            entries: &[uniform_entry(0)],
+        });
+        let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("object bind group layout"),
+            entries: &[
+                uniform_entry(0),
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("scene pipeline layout"),
+            bind_group_layouts: &[Some(&frame_layout), Some(&object_layout)],
+            immediate_size: 0,
+        });
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("scene.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("shaders/scene.wgsl").into()),
+        });
+        let frame_buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("frame uniforms"),
+            size: std::mem::size_of::<FrameUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let frame_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("frame bind group"),
+            layout: &frame_layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: frame_buffer.as_entire_binding(),
+            }],
+        });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("repeating trilinear sampler"),
+            address_mode_u: wgpu::AddressMode::Repeat,
+            address_mode_v: wgpu::AddressMode::Repeat,
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            mipmap_filter: wgpu::MipmapFilterMode::Linear,
+            anisotropy_clamp: 8,
+            ..Default::default()
+        });
+        let white = image::RgbaImage::from_pixel(1, 1, image::Rgba([255; 4]));
+
+        let object = |name: &'static str,
+                      mesh: &MeshData,
+                      world: Mat4,
+                      material: Material,
+                      picture: &image::RgbaImage,
+                      repeat: Vec2| {
+            let uniform = ObjectUniform {
+                world,
+                normal_matrix: world.inverse().transpose(),
+                ambient: material.ambient.extend(1.0),
+                diffuse: material.diffuse.extend(material.alpha),
+                specular: material.specular.extend(material.shininess),
+                params: Vec4::new(repeat.x, repeat.y, 0.0, 0.0),
+            };
+            let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(&format!("{name} uniforms")),
+                contents: bytemuck::bytes_of(&uniform),
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+            let view = texture::upload(device, queue, &format!("{name} texture"), picture);
+            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(&format!("{name} bind group")),
+                layout: &object_layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: buffer.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: wgpu::BindingResource::TextureView(&view),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: wgpu::BindingResource::Sampler(&sampler),
+                    },
+                ],
+            });
+            Drawable {
+                name,
+                mesh: GpuMesh::new(device, name, mesh),
+                bind_group,
+            }
+        };
+
+        let floor = object(
+            "floor",
+            &floor_mesh(),
+            Mat4::IDENTITY,
+            ROOM_MATERIAL,
+            &checker,
+            Vec2::ONE,
+        );
+        let wall = object(
+            "wall",
+            &wall_mesh(),
+            Mat4::IDENTITY,
+            ROOM_MATERIAL,
+            &bricks,
+            Vec2::ONE,
+        );
+        let mirror = object(
+            "mirror",
+            &mirror_mesh(),
+            Mat4::IDENTITY,
+            MIRROR_MATERIAL,
+            &ice,
+            Vec2::ONE,
+        );
+        let crate_box = object(
+            "crate",
+            &MeshData::cuboid(Vec3::splat(CRATE_SIZE)),
+            Mat4::from_translation(CRATE_CENTRE),
+            ROOM_MATERIAL,
+            &crate_image,
+            Vec2::ONE,
+        );
+        let skull = object(
+            "skull",
+            &skull_mesh,
+            skull_world(),
+            SKULL_MATERIAL,
+            &white,
+            Vec2::ONE,
+        );
+        let depth_view = crate::views::DepthViewPipelines::supported(adapter)
+            .then(|| crate::views::DepthViewPipelines::new(device, color_format));
+        Ok(Self {
+            color_format,
+            floor,
+            wall,
+            mirror,
+            crate_box,
+            skull,
+            frame_buffer,
+            frame_bind_group,
+            pipeline_layout,
+            shader,
+            depth_view,
+        })
+    }
+
+    /// Bakes a recipe into a pipeline that draws the room's objects.
+    pub fn pipeline(&self, device: &wgpu::Device, recipe: &Recipe) -> wgpu::RenderPipeline {
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(recipe.name),
+            layout: Some(&self.pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &self.shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(Vertex::LAYOUT)],
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &self.shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: self.color_format,
+                    blend: recipe.blend,
+                    write_mask: recipe.color_writes,
+                })],
+            }),
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleList,
+                front_face: recipe.front_face,
+                cull_mode: recipe.cull_mode,
+                ..Default::default()
+            },
+            depth_stencil: Some(recipe.depth_stencil()),
+            multisample: wgpu::MultisampleState::default(),
+            multiview_mask: None,
+            cache: None,
+        })
+    }
+
+    /// Writes this frame's camera and lights.
+    pub fn update(&self, queue: &wgpu::Queue, camera: &Camera, aspect: f32) {
+        let uniform = FrameUniform {
+            view_projection: camera.view_projection(aspect),
+            eye: camera.eye().extend(1.0),
+            lights: LIGHTS.map(|light| LightUniform {
+                direction: light.direction.extend(0.0),
+                ambient: light.ambient.extend(1.0),
+                diffuse: light.diffuse.extend(1.0),
+                specular: light.specular.extend(1.0),
+            }),
+        };
+        queue.write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&uniform));
+    }
+
+    /// Binds the frame's camera and lights (group 0).
+    pub fn bind_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &self.frame_bind_group, &[]);
+    }
+}
+
+/// Where the skull stands: turned towards the camera's side, so the mirror shows its other side.
+pub fn skull_world() -> Mat4 {
+    Mat4::from_translation(SKULL_CENTRE)
+        * Mat4::from_rotation_y(SKULL_YAW_DEGREES.to_radians())
+        * Mat4::from_scale(Vec3::splat(SKULL_SIZE))
+}
+
+/// The corners of the mirror, counter-clockwise seen from the room.
+pub fn mirror_corners() -> [Vec3; 4] {
+    let (a, b) = (MIRROR_MIN, MIRROR_MAX);
+    [
+        Vec3::new(a.x, a.y, 0.0),
+        Vec3::new(b.x, a.y, 0.0),
+        Vec3::new(b.x, b.y, 0.0),
+        Vec3::new(a.x, b.y, 0.0),
+    ]
+}
+
+/// The floor: one 4 m checker tile repeated.
+fn floor_mesh() -> MeshData {
+    let mut mesh = MeshData::default();
+    let width = 2.0 * WALL_HALF_WIDTH;
+    mesh.add_quad(
+        Vec3::new(-WALL_HALF_WIDTH, 0.0, FLOOR_DEPTH),
+        Vec3::X * width,
+        -Vec3::Z * FLOOR_DEPTH,
+        Vec2::new(width, FLOOR_DEPTH) / 4.0,
+    );
+    mesh
+}
+
+/// The wall: three pieces around the mirror's opening, bricks continuous across them.
+fn wall_mesh() -> MeshData {
+    let mut mesh = MeshData::default();
+    let (w, h) = (WALL_HALF_WIDTH, WALL_HEIGHT);
+    let (a, b) = (MIRROR_MIN, MIRROR_MAX);
+    // (left, bottom) and (right, top) of each piece.
+    for (min, max) in [
+        (Vec2::new(-w, 0.0), Vec2::new(a.x, b.y)),
+        (Vec2::new(b.x, 0.0), Vec2::new(w, b.y)),
+        (Vec2::new(-w, b.y), Vec2::new(w, h)),
+    ] {
+        let size = max - min;
+        mesh.add_quad(
+            min.extend(0.0),
+            Vec3::X * size.x,
+            Vec3::Y * size.y,
+            Vec2::ONE,
+        );
+    }
+    // One brick texture per 2 m, laid by position so the courses line up across the pieces.
+    for vertex in &mut mesh.vertices {
+        vertex.uv = [vertex.position[0] / 2.0, -vertex.position[1] / 2.0];
+    }
+    mesh
+}
+
+fn mirror_mesh() -> MeshData {
+    let mut mesh = MeshData::default();
+    let size = MIRROR_MAX - MIRROR_MIN;
+    mesh.add_quad(MIRROR_MIN, Vec3::X * size.x, Vec3::Y * size.y, Vec2::ONE);
+    mesh
+}
+
+fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+/// The projection's planes, for shaders that linearise depth.
+pub fn depth_planes() -> (f32, f32) {
+    (camera::NEAR, camera::FAR)
+}

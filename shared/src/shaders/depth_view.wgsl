@@ -1,0 +1,46 @@
+// view=depth: the depth buffer drawn as grey levels. Left half: the raw values wgpu stores (0 at the
+// near plane, 1 at the far plane). Right half: the same values linearised back to distances.
+
+struct Planes {
+    near: f32,
+    far: f32,
+};
+
+@group(0) @binding(0) var depth_buffer: texture_depth_2d;
+@group(0) @binding(1) var<uniform> planes: Planes;
+
+@vertex
+fn vs_fullscreen(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f32> {
+    // One triangle that covers the screen.
+    let uv = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u));
+    return vec4<f32>(uv * 2.0 - 1.0, 0.0, 1.0);
+}
+
+// wgpu's projection maps view distance z in [near, far] to depth d = far (z - near) / (z (far - near)),
+// so z = near far / (far - d (far - near)). No `* 2 - 1` step: wgpu's depth range is 0..1, not GL's -1..1.
+fn linearise(d: f32) -> f32 {
+    let z = planes.near * planes.far / (planes.far - d * (planes.far - planes.near));
+    return (z - planes.near) / (planes.far - planes.near);
+}
+
+@fragment
+fn fs_depth(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let size = textureDimensions(depth_buffer);
+    let pixel = vec2<i32>(position.xy);
+    let d = textureLoad(depth_buffer, pixel, 0);
+    let middle = i32(size.x / 2u);
+    if abs(pixel.x - middle) < 2 {
+        return vec4<f32>(0.9, 0.3, 0.1, 1.0); // the divider
+    }
+    var grey = d;
+    if pixel.x > middle {
+        grey = linearise(d);
+    }
+    return vec4<f32>(vec3<f32>(grey), 1.0);
+}
+
+// Depth readback for tests: the depth buffer copied into an R32Float colour target.
+@fragment
+fn fs_copy_depth(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    return vec4<f32>(textureLoad(depth_buffer, vec2<i32>(position.xy), 0), 0.0, 0.0, 1.0);
+}

@@ -1,0 +1,84 @@
+// The room's one shader: Blinn-Phong lighting from three directional lights, as in Luna's demos.
+
+struct Light {
+    // The direction the light travels, in world space (w unused).
+    direction: vec4<f32>,
+    ambient: vec4<f32>,
+    diffuse: vec4<f32>,
+    specular: vec4<f32>,
+};
+
+struct Frame {
+    view_projection: mat4x4<f32>,
+    eye: vec4<f32>,
+    lights: array<Light, 3>,
+};
+
+struct Object {
+    world: mat4x4<f32>,
+    // The inverse transpose of `world`: it carries normals (see the reflection chapter).
+    normal_matrix: mat4x4<f32>,
+    ambient: vec4<f32>,
+    // rgb: diffuse colour; a: the material's alpha.
+    diffuse: vec4<f32>,
+    // rgb: specular colour; a: shininess.
+    specular: vec4<f32>,
+    // xy: texture repeat; z: alpha-test cut-off (0 = none).
+    params: vec4<f32>,
+};
+
+@group(0) @binding(0) var<uniform> frame: Frame;
+@group(1) @binding(0) var<uniform> object: Object;
+@group(1) @binding(1) var base_texture: texture_2d<f32>;
+@group(1) @binding(2) var base_sampler: sampler;
+
+struct VertexIn {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) uv: vec2<f32>,
+};
+
+struct VertexOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world_position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) uv: vec2<f32>,
+};
+
+@vertex
+fn vs_main(in: VertexIn) -> VertexOut {
+    let world = object.world * vec4<f32>(in.position, 1.0);
+    var out: VertexOut;
+    out.clip = frame.view_projection * world;
+    out.world_position = world.xyz;
+    out.normal = (object.normal_matrix * vec4<f32>(in.normal, 0.0)).xyz;
+    out.uv = in.uv * object.params.xy;
+    return out;
+}
+
+@fragment
+fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
+    let texel = textureSample(base_texture, base_sampler, in.uv);
+    let alpha = texel.a * object.diffuse.a;
+    if object.params.z > 0.0 && texel.a < object.params.z {
+        discard;
+    }
+    let n = normalize(in.normal);
+    let to_eye = normalize(frame.eye.xyz - in.world_position);
+    var ambient = vec3<f32>(0.0);
+    var diffuse = vec3<f32>(0.0);
+    var specular = vec3<f32>(0.0);
+    for (var i = 0; i < 3; i += 1) {
+        let light = frame.lights[i];
+        let to_light = -normalize(light.direction.xyz);
+        ambient += object.ambient.rgb * light.ambient.rgb;
+        let lambert = max(dot(n, to_light), 0.0);
+        if lambert > 0.0 {
+            diffuse += lambert * object.diffuse.rgb * light.diffuse.rgb;
+            let halfway = normalize(to_light + to_eye);
+            let highlight = pow(max(dot(n, halfway), 0.0), object.specular.a);
+            specular += highlight * object.specular.rgb * light.specular.rgb;
+        }
+    }
+    return vec4<f32>(texel.rgb * (ambient + diffuse) + specular, alpha);
+}

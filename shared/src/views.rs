@@ -1,0 +1,169 @@
+//! Looking inside the buffers: the depth buffer drawn as grey levels (`view=depth`), and the copy of
+//! depth into a readable colour texture that tests use (a depth aspect of `Depth24PlusStencil8` cannot
+//! be copied to a buffer directly).
+
+use wgpu::util::DeviceExt;
+
+use crate::gpu::DepthStencil;
+
+/// The format depth is copied into for readback.
+pub const DEPTH_COPY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+
+/// Pipelines that read the depth buffer; built once with the scene.
+pub struct DepthViewPipelines {
+    layout: wgpu::BindGroupLayout,
+    planes: wgpu::Buffer,
+    show: wgpu::RenderPipeline,
+    copy: wgpu::RenderPipeline,
+}
+
+impl DepthViewPipelines {
+    /// Whether shaders can read the depth buffer and R32Float can be rendered to: not on the GL
+    /// backend (`textureLoad` from depth textures has no GLSL translation there).
+    pub fn supported(adapter: &wgpu::Adapter) -> bool {
+        adapter.get_info().backend != wgpu::Backend::Gl
+    }
+
+    /// What to tell someone who asks for the depth buffer where it cannot be read.
+    pub const UNSUPPORTED: &str =
+        "the GL backend cannot read the depth buffer in a shader: use Vulkan (--backend vulkan)";
+
+    pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("depth view bind group layout"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Depth,
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+            ],
+        });
+        let (near, far) = crate::scene::depth_planes();
+        let planes = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("depth view planes"),
+            contents: bytemuck::cast_slice(&[near, far]),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("depth view pipeline layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("depth_view.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("shaders/depth_view.wgsl").into()),
+        });
+        let pipeline = |label: &str, entry: &str, format: wgpu::TextureFormat| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(label),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &shader,
+                    entry_point: Some("vs_fullscreen"),
+                    compilation_options: Default::default(),
+                    buffers: &[],
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &shader,
+                    entry_point: Some(entry),
+                    compilation_options: Default::default(),
+                    targets: &[Some(format.into())],
+                }),
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: None,
+                multisample: wgpu::MultisampleState::default(),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        Self {
+            show: pipeline("SHOW_DEPTH", "fs_depth", color_format),
+            copy: pipeline("COPY_DEPTH", "fs_copy_depth", DEPTH_COPY_FORMAT),
+            layout,
+            planes,
+        }
+    }
+
+    /// The bind group that reads this depth buffer; made again when the buffer is resized.
+    pub fn bind_group(&self, device: &wgpu::Device, target: &DepthStencil) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("depth view bind group"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&target.depth_only),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: self.planes.as_entire_binding(),
+                },
+            ],
+        })
+    }
+
+    /// Draws the depth buffer over `color` (raw on the left, linearised on the right).
+    pub fn show(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        color: &wgpu::TextureView,
+        bind_group: &wgpu::BindGroup,
+    ) {
+        self.fullscreen(encoder, "show depth", &self.show, color, bind_group);
+    }
+
+    /// Copies the depth buffer into `target`, an R32Float texture of the same size.
+    pub fn copy(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        bind_group: &wgpu::BindGroup,
+    ) {
+        self.fullscreen(encoder, "copy depth", &self.copy, target, bind_group);
+    }
+
+    fn fullscreen(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        label: &str,
+        pipeline: &wgpu::RenderPipeline,
+        target: &wgpu::TextureView,
+        bind_group: &wgpu::BindGroup,
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
