@@ -30,7 +30,7 @@ pub struct Request {
 
 impl Request {
     /// The default picture of lesson `L` at 1280×720, changed by `name=value` knob settings.
-    pub fn new<L: Lesson>(settings: &[&str]) -> Result<Self> {
+    pub fn new<L: Lesson>(settings: &[impl AsRef<str>]) -> Result<Self> {
         Ok(Self {
             width: 1280,
             height: 720,

@@ -48,6 +48,9 @@ impl MeshData {
     pub fn load_obj(path: &Path) -> Result<Self> {
         let shown = path.display();
         let bytes = std::fs::read(path).with_context(|| format!("cannot read model `{shown}`"))?;
+        if std::str::from_utf8(&bytes).is_err() {
+            bail!("model `{shown}` is not an OBJ file: OBJ is text, this file is binary");
+        }
         let mut reader = std::io::BufReader::new(bytes.as_slice());
         let options = tobj::LoadOptions {
             single_index: true,

@@ -1,0 +1,146 @@
+//! The `depth-test` binary as a learner runs it: a screenshot without a display, one clear line and
+//! exit code 1 for every kind of bad input, and a real window under a display (CI runs it under Xvfb).
+
+use std::path::{Path, PathBuf};
+
+use workbook::testing::{run, run_with};
+
+const EXE: &str = env!("CARGO_BIN_EXE_depth-test");
+
+fn exe() -> &'static Path {
+    Path::new(EXE)
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("depth-test-cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    dir.join(name)
+}
+
+#[test]
+fn screenshot_without_a_display_writes_a_1280x720_png() {
+    let out = scratch("default.png");
+    let _ = std::fs::remove_file(&out);
+    run(exe(), &["--screenshot", out.to_str().unwrap()]).assert_clean_success();
+    let image = image::open(&out).unwrap();
+    assert_eq!((image.width(), image.height()), (1280, 720));
+}
+
+#[test]
+fn knobs_are_listed_and_checked() {
+    let listed = run(exe(), &["--list-knobs"]);
+    listed.assert_clean_success();
+    for name in ["depth", "depth-write", "order", "view"] {
+        assert!(
+            listed.stdout.contains(&format!("] {name}:")),
+            "{}",
+            listed.stdout
+        );
+    }
+    run(exe(), &["--set", "colour=red"]).assert_one_line_error("unknown knob `colour`");
+    run(exe(), &["--set", "depth=sometimes"]).assert_one_line_error("choose one of never");
+    run(exe(), &["--set", "depth"]).assert_one_line_error("NAME=VALUE");
+    run(exe(), &["--frobnicate"]).assert_one_line_error("unexpected argument");
+}
+
+#[test]
+fn bad_sizes_and_cameras_are_refused() {
+    for size in ["0x0", "100000x100000", "12", "axb", "-5x10"] {
+        let size = format!("--size={size}");
+        run(exe(), &[&size, "--screenshot", "x.png"]).assert_one_line_error("--size");
+    }
+    run(exe(), &["--camera", "1,2", "--screenshot", "x.png"]).assert_one_line_error("--camera");
+}
+
+#[test]
+fn bad_models_are_refused() {
+    let png = scratch("not-a-model.png");
+    std::fs::write(&png, b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR").unwrap();
+    let empty = scratch("empty.obj");
+    std::fs::write(&empty, b"").unwrap();
+    let corrupt = scratch("corrupt.obj");
+    std::fs::write(&corrupt, b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n").unwrap();
+    let garbled = scratch("garbled.obj");
+    std::fs::write(&garbled, b"v 0 zero 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let point = scratch("point.obj");
+    std::fs::write(&point, b"v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n").unwrap();
+    let shot = scratch("model.png");
+    let shot = shot.to_str().unwrap();
+    let cases = [
+        ("/no/such/model.obj", "cannot read model"),
+        (png.to_str().unwrap(), "OBJ is text"),
+        (empty.to_str().unwrap(), "no triangles"),
+        (corrupt.to_str().unwrap(), "model"),
+        (garbled.to_str().unwrap(), "not a valid OBJ"),
+        (point.to_str().unwrap(), "one point"),
+    ];
+    for (model, expected) in cases {
+        run(exe(), &["--model", model, "--screenshot", shot]).assert_one_line_error(expected);
+    }
+}
+
+#[test]
+fn a_corrupt_texture_is_refused() {
+    let assets = scratch("assets");
+    std::fs::create_dir_all(&assets).unwrap();
+    let real = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    for entry in std::fs::read_dir(&real).unwrap().flatten() {
+        if entry.path().is_file() {
+            std::fs::copy(entry.path(), assets.join(entry.file_name())).unwrap();
+        }
+    }
+    std::fs::write(
+        assets.join("bricks.png"),
+        b"\x89PNG\r\n\x1a\nthis is not a png",
+    )
+    .unwrap();
+    let shot = scratch("texture.png");
+    run(
+        exe(),
+        &[
+            "--assets",
+            assets.to_str().unwrap(),
+            "--screenshot",
+            shot.to_str().unwrap(),
+        ],
+    )
+    .assert_one_line_error("bricks.png` is not a valid PNG");
+}
+
+#[test]
+fn an_unwritable_screenshot_path_is_refused() {
+    run(exe(), &["--screenshot", "/no/such/folder/out.png"])
+        .assert_one_line_error("cannot write screenshot");
+}
+
+#[test]
+fn no_adapter_and_no_display_say_what_to_do() {
+    // No DX12 on Linux: no adapter at all.
+    run(exe(), &["--backend", "dx12", "--screenshot", "x.png"])
+        .assert_one_line_error("mesa-vulkan-drivers");
+    run(exe(), &["--backend", "glide", "--screenshot", "x.png"])
+        .assert_one_line_error("unknown backend");
+    // No DISPLAY and no WAYLAND_DISPLAY: no window.
+    run(exe(), &[]).assert_one_line_error("--screenshot");
+    // A DISPLAY with no server behind it.
+    run_with(exe(), &[], &[("DISPLAY", ":987")]).assert_one_line_error("--screenshot");
+}
+
+/// A real window for 30 frames. Needs a display: CI runs the suite under `xvfb-run`.
+#[test]
+fn a_window_shows_thirty_frames_and_closes() {
+    let Ok(display) = std::env::var("DISPLAY") else {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must run this test with a display (xvfb-run)"
+        );
+        eprintln!("skipped: no DISPLAY (run under xvfb-run to include it)");
+        return;
+    };
+    let outcome = run_with(
+        exe(),
+        &["--frames", "30", "--size", "320x240"],
+        &[("DISPLAY", &display)],
+    );
+    outcome.assert_clean_success();
+}

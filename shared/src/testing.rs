@@ -1,0 +1,67 @@
+//! Helpers for the lessons' command-line tests: run a lesson binary as a learner would and look at
+//! what it printed.
+
+use std::path::Path;
+use std::process::Command;
+
+/// What a run of a lesson binary left.
+#[derive(Debug)]
+pub struct Outcome {
+    pub code: Option<i32>,
+    pub stdout: String,
+    pub stderr: String,
+}
+
+/// Runs `exe` with `args`, with no display and no backtraces (as a learner's plain shell).
+pub fn run(exe: &Path, args: &[&str]) -> Outcome {
+    run_with(exe, args, &[])
+}
+
+/// Runs `exe` with `args` and extra environment variables; `DISPLAY`, `WAYLAND_DISPLAY` and
+/// `RUST_BACKTRACE` are removed unless given.
+pub fn run_with(exe: &Path, args: &[&str], env: &[(&str, &str)]) -> Outcome {
+    let mut command = Command::new(exe);
+    command.args(args);
+    for name in ["DISPLAY", "WAYLAND_DISPLAY", "RUST_BACKTRACE", "RUST_LOG"] {
+        command.env_remove(name);
+    }
+    for (name, value) in env {
+        command.env(name, value);
+    }
+    let output = command
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run {}: {e}", exe.display()));
+    Outcome {
+        code: output.status.code(),
+        stdout: String::from_utf8_lossy(&output.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
+    }
+}
+
+impl Outcome {
+    /// Asserts the run failed with exit code 1 and exactly one line on stderr, an error naming
+    /// `expected`, and no panic.
+    pub fn assert_one_line_error(&self, expected: &str) {
+        let lines: Vec<&str> = self.stderr.lines().collect();
+        assert_eq!(self.code, Some(1), "exit code; stderr:\n{}", self.stderr);
+        assert_eq!(
+            lines.len(),
+            1,
+            "expected one line on stderr, got:\n{}",
+            self.stderr
+        );
+        assert!(!self.stderr.contains("panicked"), "{}", self.stderr);
+        assert!(lines[0].contains(": error: "), "{}", lines[0]);
+        assert!(
+            lines[0].to_lowercase().contains(&expected.to_lowercase()),
+            "expected `{expected}` in: {}",
+            lines[0]
+        );
+    }
+
+    /// Asserts the run succeeded with nothing on stderr.
+    pub fn assert_clean_success(&self) {
+        assert_eq!(self.code, Some(0), "stderr:\n{}", self.stderr);
+        assert!(self.stderr.trim().is_empty(), "stderr:\n{}", self.stderr);
+    }
+}

@@ -1,0 +1,83 @@
+//! Image comparison with NVIDIA FLIP, the perceptual metric wgpu's own tests use.
+//!
+//! FLIP gives each pixel an error between 0 (no visible difference) and 1 (as different as can be),
+//! modelling what a viewer at a given distance notices. Two numbers judge a comparison: the mean error
+//! over the image (small overall drift), and the share of pixels whose error exceeds
+//! [`VISIBLE`] (a small region that changed completely, which barely moves the mean).
+
+use std::path::Path;
+
+use anyhow::{Context, Result, bail};
+use image::{RgbImage, RgbaImage};
+
+/// A pixel error above this is a difference anyone would see.
+pub const VISIBLE: f32 = 0.25;
+
+/// What a comparison found.
+pub struct Comparison {
+    pub mean: f32,
+    /// Share of pixels (0..1) with an error above [`VISIBLE`].
+    pub visible_share: f32,
+    /// Each pixel's error, coloured with FLIP's magma map (black: none, yellow: large).
+    pub difference: RgbImage,
+}
+
+/// How far an image may be from its reference and still pass.
+#[derive(Debug, Clone, Copy)]
+pub struct Threshold {
+    pub mean: f32,
+    pub visible_share: f32,
+}
+
+impl Comparison {
+    pub fn passes(&self, threshold: Threshold) -> bool {
+        self.mean <= threshold.mean && self.visible_share <= threshold.visible_share
+    }
+
+    pub fn summary(&self) -> String {
+        format!(
+            "FLIP mean {:.5}, {:.3}% of pixels visibly different",
+            self.mean,
+            self.visible_share * 100.0
+        )
+    }
+}
+
+/// Compares `test` with `reference` (alpha ignored: FLIP compares colours).
+pub fn compare(reference: &RgbaImage, test: &RgbaImage) -> Result<Comparison> {
+    if reference.dimensions() != test.dimensions() {
+        bail!(
+            "the images differ in size: {}x{} against {}x{}",
+            reference.width(),
+            reference.height(),
+            test.width(),
+            test.height()
+        );
+    }
+    let (width, height) = reference.dimensions();
+    let rgb = |image: &RgbaImage| {
+        let data = image::DynamicImage::ImageRgba8(image.clone()).into_rgb8();
+        nv_flip::FlipImageRgb8::with_data(width, height, &data)
+    };
+    let errors = nv_flip::flip(
+        rgb(reference),
+        rgb(test),
+        nv_flip::DEFAULT_PIXELS_PER_DEGREE,
+    );
+    let values = errors.to_vec();
+    let visible = values.iter().filter(|&&e| e > VISIBLE).count();
+    let pool = nv_flip::FlipPool::from_image(&errors);
+    let difference = errors.apply_color_lut(&nv_flip::magma_lut());
+    Ok(Comparison {
+        mean: pool.mean(),
+        visible_share: visible as f32 / values.len() as f32,
+        difference: RgbImage::from_raw(width, height, difference.to_vec())
+            .context("FLIP returned an image of the wrong size")?,
+    })
+}
+
+/// Reads a PNG for comparison.
+pub fn load(path: &Path) -> Result<RgbaImage> {
+    let image = image::open(path).with_context(|| format!("cannot read `{}`", path.display()))?;
+    Ok(image.to_rgba8())
+}

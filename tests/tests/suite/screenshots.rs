@@ -1,0 +1,75 @@
+//! Every screenshot of the book, rendered again and compared with the committed file by FLIP.
+
+use workbook_tests::flip::{self, Threshold};
+use workbook_tests::shots::{self, SHOTS};
+
+#[test]
+fn every_screenshot_matches_its_reference() {
+    let failures: Vec<String> = SHOTS
+        .iter()
+        .filter_map(|shot| shot.check().err().map(|e| format!("{e:#}")))
+        .collect();
+    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
+}
+
+/// The wrong picture of each lesson must be told apart from the right one by the same comparison
+/// the screenshot tests use: otherwise those tests could not notice a lesson breaking.
+#[test]
+fn wrong_pictures_fail_the_comparison_with_the_right_ones() {
+    let right = shots::render("depth-test", &[], |_| {}).unwrap().color;
+    for wrong in [&["depth=always"][..], &["depth-write=off"]] {
+        let image = shots::render("depth-test", wrong, |_| {}).unwrap().color;
+        let comparison = flip::compare(&right, &image).unwrap();
+        assert!(
+            !comparison.passes(shots::STRICT),
+            "{wrong:?} looks like the right picture: {}",
+            comparison.summary()
+        );
+    }
+}
+
+/// A reference that was changed in one small region fails, and the failure leaves the actual and
+/// difference images behind.
+#[test]
+fn a_changed_region_fails_and_writes_the_difference() {
+    let shot = &SHOTS[0];
+    let mut tampered = flip::load(&shot.path()).unwrap();
+    for y in 200..230 {
+        for x in 380..410 {
+            tampered.put_pixel(x, y, image::Rgba([255, 0, 255, 255]));
+        }
+    }
+    let name = "tampered-test-only";
+    let dir = workbook_tests::images();
+    let reference = dir.join(format!("{name}.png"));
+    tampered.save(&reference).unwrap();
+    let result = shots::check_image(name, &shot.render().unwrap(), shots::STRICT);
+    let actual = dir.join(format!("{name}-actual.png"));
+    let difference = dir.join(format!("{name}-difference.png"));
+    let written = actual.exists() && difference.exists();
+    for path in [&reference, &actual, &difference] {
+        let _ = std::fs::remove_file(path);
+    }
+    let error = result.expect_err("a 30x30 magenta patch went unnoticed");
+    assert!(error.to_string().contains("difference"), "{error}");
+    assert!(
+        written,
+        "the failure did not write -actual and -difference images"
+    );
+}
+
+#[test]
+fn a_missing_reference_fails_and_is_not_written() {
+    let image = image::RgbaImage::new(8, 8);
+    let threshold = Threshold {
+        mean: 1.0,
+        visible_share: 1.0,
+    };
+    let error = shots::check_image("no-such-reference", &image, threshold).unwrap_err();
+    assert!(error.to_string().contains("missing"), "{error}");
+    assert!(
+        !workbook_tests::images()
+            .join("no-such-reference.png")
+            .exists()
+    );
+}
