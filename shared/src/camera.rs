@@ -84,10 +84,12 @@ impl Camera {
         glam::camera::rh::view::look_at_mat4(self.eye(), TARGET, Vec3::Y)
     }
 
+    // ANCHOR: projection
     /// View to clip space with wgpu's depth range: the near plane maps to 0, the far plane to 1.
     pub fn projection(aspect: f32) -> Mat4 {
         glam::camera::rh::proj::directx::perspective(FOV_Y_DEGREES.to_radians(), aspect, NEAR, FAR)
     }
+    // ANCHOR_END: projection
 
     /// World to clip space.
     pub fn view_projection(&self, aspect: f32) -> Mat4 {

@@ -158,15 +158,19 @@ pub fn save_png(image: &image::RgbaImage, path: &std::path::Path) -> Result<()> 
 
 /// Mesa's drivers print "error: XDG_RUNTIME_DIR is invalid or not set" to stderr when that variable is
 /// missing (in containers and CI): harmless, but it reads like our error. Give them a private folder.
+/// Call it first thing in `main`, before any thread starts (it sets an environment variable).
 #[allow(unsafe_code)]
-fn quiet_mesa() {
+pub fn quiet_mesa() {
     #[cfg(unix)]
     if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
         use std::os::unix::fs::{DirBuilderExt, MetadataExt};
         let user = std::env::var("USER").unwrap_or_else(|_| "user".into());
         let dir = std::env::temp_dir().join(format!("workbook-runtime-{user}"));
         let _ = std::fs::DirBuilder::new().mode(0o700).create(&dir);
-        let private = std::fs::metadata(&dir).is_ok_and(|m| m.is_dir() && m.mode() & 0o077 == 0);
+        // Ours (the owner of /proc/self is this process's user) and closed to everyone else.
+        let me = std::fs::metadata("/proc/self").map(|m| m.uid()).ok();
+        let private = std::fs::metadata(&dir)
+            .is_ok_and(|m| m.is_dir() && m.mode() & 0o077 == 0 && Some(m.uid()) == me);
         if !private {
             return;
         }

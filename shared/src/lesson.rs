@@ -11,6 +11,7 @@ use crate::knobs::{Knob, Knobs};
 use crate::scene::{self, Scene};
 use crate::views::DepthViewPipelines;
 
+// ANCHOR: lesson
 pub trait Lesson: Sized {
     /// The package name, e.g. `depth-test`.
     const NAME: &'static str;
@@ -25,6 +26,7 @@ pub trait Lesson: Sized {
     /// Records one frame.
     fn render(&self, frame: &mut Frame<'_>);
 }
+// ANCHOR_END: lesson
 
 /// Where to begin a pass: from cleared buffers, or on top of what the frame has drawn so far.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -11,6 +11,7 @@ use wgpu::{
 
 use crate::gpu::DEPTH_STENCIL_FORMAT;
 
+// ANCHOR: recipe
 /// One combination of depth-stencil, blend and rasterizer state: one pipeline.
 #[derive(Debug, Clone)]
 pub struct Recipe {
@@ -30,6 +31,7 @@ pub struct Recipe {
     /// Which colour channels are written at all.
     pub color_writes: ColorWrites,
 }
+// ANCHOR_END: recipe
 
 /// A stencil state that neither tests nor writes: every fragment passes, the buffer is untouched.
 pub const NO_STENCIL: StencilState = StencilState {
@@ -39,6 +41,7 @@ pub const NO_STENCIL: StencilState = StencilState {
     write_mask: 0,
 };
 
+// ANCHOR: opaque
 /// Solid objects, the usual way: depth test `Less`, depth write on, back faces culled, no blending.
 /// (Luna draws these with the default states.)
 pub const OPAQUE: Recipe = Recipe {
@@ -51,6 +54,7 @@ pub const OPAQUE: Recipe = Recipe {
     blend: None,
     color_writes: ColorWrites::ALL,
 };
+// ANCHOR_END: opaque
 
 impl Recipe {
     /// The `DepthStencilState` of this recipe for the workbook's depth-stencil format.

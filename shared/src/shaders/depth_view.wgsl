@@ -16,12 +16,14 @@ fn vs_fullscreen(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f
     return vec4<f32>(uv * 2.0 - 1.0, 0.0, 1.0);
 }
 
+// ANCHOR: linearise
 // wgpu's projection maps view distance z in [near, far] to depth d = far (z - near) / (z (far - near)),
 // so z = near far / (far - d (far - near)). No `* 2 - 1` step: wgpu's depth range is 0..1, not GL's -1..1.
 fn linearise(d: f32) -> f32 {
     let z = planes.near * planes.far / (planes.far - d * (planes.far - planes.near));
     return (z - planes.near) / (planes.far - planes.near);
 }
+// ANCHOR_END: linearise
 
 @fragment
 fn fs_depth(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {

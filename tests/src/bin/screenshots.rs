@@ -7,6 +7,7 @@ use std::process::ExitCode;
 use workbook_tests::shots::SHOTS;
 
 fn main() -> ExitCode {
+    workbook::cli::quiet_mesa();
     let names: Vec<String> = std::env::args().skip(1).collect();
     if let Some(unknown) = names.iter().find(|n| !SHOTS.iter().any(|s| s.name == *n)) {
         let known: Vec<_> = SHOTS.iter().map(|s| s.name).collect();
