@@ -167,6 +167,26 @@ fn target(
     })
 }
 
+/// Copies one aspect of a texture (mip 0) to the CPU and waits for it: rows top to bottom, without
+/// padding. Tests use it for textures of their own.
+pub fn read_texture(
+    gpu: &Gpu,
+    texture: &wgpu::Texture,
+    aspect: wgpu::TextureAspect,
+    bytes_per_texel: u32,
+) -> Result<Vec<u8>> {
+    let mut encoder = gpu
+        .device
+        .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("readback"),
+        });
+    let readback = Readback::new(&gpu.device, &mut encoder, texture, aspect, bytes_per_texel);
+    gpu.queue.submit([encoder.finish()]);
+    let bytes = readback.read(&gpu.device)?;
+    gpu.check_errors()?;
+    Ok(bytes)
+}
+
 /// A texture copied into a mappable buffer, rows padded to 256 bytes as wgpu requires.
 struct Readback {
     buffer: wgpu::Buffer,

@@ -14,6 +14,7 @@ pub mod mesh;
 pub mod runner;
 pub mod scene;
 pub mod states;
+pub mod stencil;
 pub mod testing;
 pub mod texture;
 pub mod views;
