@@ -92,6 +92,12 @@ impl Frame<'_> {
         pass
     }
 
+    /// Replaces the colours with the stencil buffer in false colour (see `views::stencil_colour`).
+    pub fn show_stencil(&mut self) {
+        let stencil_view = &self.scene.stencil_view;
+        stencil_view.show(&mut self.encoder, self.color, &self.depth_stencil.view);
+    }
+
     /// Replaces the colours with the depth buffer: raw values on the left, linearised on the right.
     pub fn show_depth(&mut self) {
         match self.depth_view {

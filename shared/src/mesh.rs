@@ -182,6 +182,21 @@ impl MeshData {
         mesh
     }
 
+    /// The mesh moved by `offset`.
+    pub fn translated(mut self, offset: Vec3) -> Self {
+        for vertex in &mut self.vertices {
+            vertex.position = (Vec3::from(vertex.position) + offset).into();
+        }
+        self
+    }
+
+    /// Adds another mesh's triangles to this one.
+    pub fn append(&mut self, other: MeshData) {
+        let base = self.vertices.len() as u32;
+        self.vertices.extend(other.vertices);
+        self.indices.extend(other.indices.iter().map(|i| i + base));
+    }
+
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3
     }

@@ -15,6 +15,7 @@ use wgpu::util::DeviceExt;
 use crate::Gpu;
 use crate::camera::{self, Camera};
 use crate::mesh::{GpuMesh, MeshData, Vertex};
+use crate::reflect::{Plane, normal_matrix, reflection};
 use crate::states::Recipe;
 use crate::texture;
 
@@ -24,6 +25,8 @@ pub const MIRROR_MAX: Vec3 = Vec3::new(2.5, 4.0, 0.0);
 /// The wall around it: x in -6..6, y in 0..5.
 pub const WALL_HALF_WIDTH: f32 = 6.0;
 pub const WALL_HEIGHT: f32 = 5.0;
+/// The wall is a solid block behind the mirror's plane, this thick.
+pub const WALL_THICKNESS: f32 = 0.25;
 /// The floor runs from the wall to z = 12.
 pub const FLOOR_DEPTH: f32 = 12.0;
 /// The crate: a cube standing on the floor, in front of the mirror's lower right corner.
@@ -151,17 +154,26 @@ pub fn default_assets() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets")
 }
 
-/// One thing in the room: a mesh, where it stands, what it is made of.
+/// One thing in the room: a mesh, where it stands, what it is made of — and the same thing as the
+/// mirror shows it.
 pub struct Drawable {
     pub name: &'static str,
     mesh: GpuMesh,
     bind_group: wgpu::BindGroup,
+    reflected: wgpu::BindGroup,
 }
 
 impl Drawable {
     /// Binds this object's transform, material and texture (group 1) and draws it.
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
         pass.set_bind_group(1, &self.bind_group, &[]);
+        self.mesh.draw(pass);
+    }
+
+    /// Draws the object's mirror image: its world matrix is `R * world`, R the reflection in the
+    /// mirror's plane. Bind the reflected lights with [`Scene::bind_reflected_frame`] first.
+    pub fn draw_reflected(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(1, &self.reflected, &[]);
         self.mesh.draw(pass);
     }
 }
@@ -175,11 +187,15 @@ pub struct Scene {
     pub crate_box: Drawable,
     pub skull: Drawable,
     frame_buffer: wgpu::Buffer,
-    frame_bind_group: wgpu::BindGroup,
+    pub(crate) frame_bind_group: wgpu::BindGroup,
+    reflected_frame_buffer: wgpu::Buffer,
+    reflected_frame_bind_group: wgpu::BindGroup,
     pipeline_layout: wgpu::PipelineLayout,
+    pub(crate) frame_layout: wgpu::BindGroupLayout,
     shader: wgpu::ShaderModule,
     /// `None` where shaders cannot read the depth buffer (the GL backend).
     pub(crate) depth_view: Option<crate::views::DepthViewPipelines>,
+    pub(crate) stencil_view: crate::views::StencilViewPipeline,
 }
 
 impl Scene {
@@ -237,20 +253,25 @@ impl Scene {
             label: Some("scene.wgsl"),
             source: wgpu::ShaderSource::Wgsl(include_str!("shaders/scene.wgsl").into()),
         });
-        let frame_buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("frame uniforms"),
-            size: std::mem::size_of::<FrameUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let frame_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("frame bind group"),
-            layout: &frame_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: frame_buffer.as_entire_binding(),
-            }],
-        });
+        let frame = |label: &str| {
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(&format!("{label} uniforms")),
+                size: std::mem::size_of::<FrameUniform>() as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(&format!("{label} bind group")),
+                layout: &frame_layout,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: buffer.as_entire_binding(),
+                }],
+            });
+            (buffer, bind_group)
+        };
+        let (frame_buffer, frame_bind_group) = frame("frame");
+        let (reflected_frame_buffer, reflected_frame_bind_group) = frame("reflected frame");
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("repeating trilinear sampler"),
             address_mode_u: wgpu::AddressMode::Repeat,
@@ -269,42 +290,50 @@ impl Scene {
                       material: Material,
                       picture: &image::RgbaImage,
                       repeat: Vec2| {
-            let uniform = ObjectUniform {
-                world,
-                normal_matrix: world.inverse().transpose(),
-                ambient: material.ambient.extend(1.0),
-                diffuse: material.diffuse.extend(material.alpha),
-                specular: material.specular.extend(material.shininess),
-                params: Vec4::new(repeat.x, repeat.y, 0.0, 0.0),
-            };
-            let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(&format!("{name} uniforms")),
-                contents: bytemuck::bytes_of(&uniform),
-                usage: wgpu::BufferUsages::UNIFORM,
-            });
             let view = texture::upload(device, queue, &format!("{name} texture"), picture);
-            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(&format!("{name} bind group")),
-                layout: &object_layout,
-                entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: buffer.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 1,
-                        resource: wgpu::BindingResource::TextureView(&view),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 2,
-                        resource: wgpu::BindingResource::Sampler(&sampler),
-                    },
-                ],
-            });
+            let bind_group = |label: String, world: Mat4| {
+                let uniform = ObjectUniform {
+                    world,
+                    normal_matrix: normal_matrix(world),
+                    ambient: material.ambient.extend(1.0),
+                    diffuse: material.diffuse.extend(material.alpha),
+                    specular: material.specular.extend(material.shininess),
+                    params: Vec4::new(repeat.x, repeat.y, 0.0, 0.0),
+                };
+                let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some(&format!("{label} uniforms")),
+                    contents: bytemuck::bytes_of(&uniform),
+                    usage: wgpu::BufferUsages::UNIFORM,
+                });
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some(&format!("{label} bind group")),
+                    layout: &object_layout,
+                    entries: &[
+                        wgpu::BindGroupEntry {
+                            binding: 0,
+                            resource: buffer.as_entire_binding(),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 1,
+                            resource: wgpu::BindingResource::TextureView(&view),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 2,
+                            resource: wgpu::BindingResource::Sampler(&sampler),
+                        },
+                    ],
+                })
+            };
+            // ANCHOR: reflected_world
+            // The mirror image of an object: first its own world matrix, then the reflection.
+            // (Column vectors: R * world. DirectXMath's row vectors write it world * R.)
+            let reflected_world = mirror_reflection() * world;
+            // ANCHOR_END: reflected_world
             Drawable {
                 name,
                 mesh: GpuMesh::new(device, name, mesh),
-                bind_group,
+                bind_group: bind_group(name.to_string(), world),
+                reflected: bind_group(format!("reflected {name}"), reflected_world),
             }
         };
 
@@ -359,9 +388,13 @@ impl Scene {
             skull,
             frame_buffer,
             frame_bind_group,
+            reflected_frame_buffer,
+            reflected_frame_bind_group,
             pipeline_layout,
+            frame_layout,
             shader,
             depth_view,
+            stencil_view: crate::views::StencilViewPipeline::new(device, color_format),
         })
     }
 
@@ -399,26 +432,61 @@ impl Scene {
         })
     }
 
-    /// Writes this frame's camera and lights.
+    /// Writes this frame's camera and lights, and the reflected lights for mirror images.
     pub fn update(&self, queue: &wgpu::Queue, camera: &Camera, aspect: f32) {
-        let uniform = FrameUniform {
+        let frame = |lights: [Light; 3]| FrameUniform {
             view_projection: camera.view_projection(aspect),
-            eye: camera.eye().extend(1.0),
-            lights: LIGHTS.map(|light| LightUniform {
+            eye: camera.eye().extend(aspect),
+            lights: lights.map(|light| LightUniform {
                 direction: light.direction.extend(0.0),
                 ambient: light.ambient.extend(1.0),
                 diffuse: light.diffuse.extend(1.0),
                 specular: light.specular.extend(1.0),
             }),
         };
-        queue.write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&uniform));
+        queue.write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&frame(LIGHTS)));
+        let reflected = frame(reflected_lights());
+        queue.write_buffer(
+            &self.reflected_frame_buffer,
+            0,
+            bytemuck::bytes_of(&reflected),
+        );
     }
 
     /// Binds the frame's camera and lights (group 0).
     pub fn bind_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
         pass.set_bind_group(0, &self.frame_bind_group, &[]);
     }
+
+    /// Binds the camera with the lights reflected in the mirror (group 0), for mirror images: the
+    /// reflected skull must be lit as the real one is, seen from behind the glass.
+    pub fn bind_reflected_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &self.reflected_frame_bind_group, &[]);
+    }
 }
+
+/// The plane of the mirror: z = 0, facing the room (+z).
+pub fn mirror_plane() -> Plane {
+    Plane::new(Vec3::Z, 0.0)
+}
+
+/// The reflection in the mirror's plane.
+pub fn mirror_reflection() -> Mat4 {
+    reflection(mirror_plane())
+}
+
+// ANCHOR: reflected_lights
+/// The lights as the mirror world sees them: each direction reflected too. Without this the mirror
+/// image would be lit from the wrong side (a key light from the front right would light the image's
+/// front right, which faces away from the light).
+pub fn reflected_lights() -> [Light; 3] {
+    let r = mirror_reflection();
+    LIGHTS.map(|light| Light {
+        direction: r.transform_vector3(light.direction),
+        ..light
+    })
+}
+// ANCHOR_END: reflected_lights
 
 /// Where the skull stands: turned towards the camera's side, so the mirror shows its other side.
 pub fn skull_world() -> Mat4 {
@@ -451,28 +519,34 @@ fn floor_mesh() -> MeshData {
     mesh
 }
 
-/// The wall: three pieces around the mirror's opening, bricks continuous across them.
+/// The wall: three solid blocks around the mirror's opening, WALL_THICKNESS deep behind the plane
+/// z = 0, so it has a back a camera behind it can see. Bricks are laid by position, so the courses
+/// line up across the blocks.
 fn wall_mesh() -> MeshData {
     let mut mesh = MeshData::default();
-    let (w, h) = (WALL_HALF_WIDTH, WALL_HEIGHT);
+    let (w, h, t) = (WALL_HALF_WIDTH, WALL_HEIGHT, WALL_THICKNESS);
     let (a, b) = (MIRROR_MIN, MIRROR_MAX);
-    // (left, bottom) and (right, top) of each piece.
+    // (left, bottom) and (right, top) of each block's face.
     for (min, max) in [
         (Vec2::new(-w, 0.0), Vec2::new(a.x, b.y)),
         (Vec2::new(b.x, 0.0), Vec2::new(w, b.y)),
         (Vec2::new(-w, b.y), Vec2::new(w, h)),
     ] {
-        let size = max - min;
-        mesh.add_quad(
-            min.extend(0.0),
-            Vec3::X * size.x,
-            Vec3::Y * size.y,
-            Vec2::ONE,
-        );
+        let size = (max - min).extend(t);
+        let centre = ((min + max) / 2.0).extend(-t / 2.0);
+        mesh.append(MeshData::cuboid(size).translated(centre));
     }
-    // One brick texture per 2 m, laid by position so the courses line up across the pieces.
+    // One brick texture per 2 m, projected along each face's normal.
     for vertex in &mut mesh.vertices {
-        vertex.uv = [vertex.position[0] / 2.0, -vertex.position[1] / 2.0];
+        let [x, y, z] = vertex.position;
+        let n = Vec3::from(vertex.normal).abs();
+        vertex.uv = if n.z > 0.5 {
+            [x / 2.0, -y / 2.0]
+        } else if n.x > 0.5 {
+            [z / 2.0, -y / 2.0]
+        } else {
+            [x / 2.0, z / 2.0]
+        };
     }
     mesh
 }

@@ -6,7 +6,8 @@
 //! on these with struct update syntax (`Recipe { depth_compare, ..OPAQUE }`), so a recipe lives once.
 
 use wgpu::{
-    BlendState, ColorWrites, CompareFunction, Face, FrontFace, StencilFaceState, StencilState,
+    BlendState, ColorWrites, CompareFunction, Face, FrontFace, StencilFaceState, StencilOperation,
+    StencilState,
 };
 
 use crate::gpu::DEPTH_STENCIL_FORMAT;
@@ -55,6 +56,66 @@ pub const OPAQUE: Recipe = Recipe {
     color_writes: ColorWrites::ALL,
 };
 // ANCHOR_END: opaque
+
+// ANCHOR: mark_mirror
+/// Writes 1 into the stencil buffer wherever the mirror is visible — and nothing else: no colour, no
+/// depth. The depth test stays on, so a pixel where something nearer (the crate) was drawn first is
+/// not marked. (Luna: `MarkMirrorDSS` with `NoRenderTargetWritesBS`.) Set the reference to 1.
+pub const MARK_MIRROR: Recipe = Recipe {
+    name: "MARK_MIRROR",
+    depth_write: false,
+    depth_compare: CompareFunction::Less,
+    stencil: StencilState {
+        front: REPLACE_ALWAYS,
+        back: REPLACE_ALWAYS,
+        read_mask: 0xff,
+        write_mask: 0xff,
+    },
+    color_writes: ColorWrites::empty(),
+    ..OPAQUE
+};
+
+/// The stencil test always passes, and a fragment that also passes the depth test writes the reference.
+const REPLACE_ALWAYS: StencilFaceState = StencilFaceState {
+    compare: CompareFunction::Always,
+    fail_op: StencilOperation::Keep,
+    depth_fail_op: StencilOperation::Keep,
+    pass_op: StencilOperation::Replace,
+};
+// ANCHOR_END: mark_mirror
+
+// ANCHOR: mark_shape
+/// Writes the reference into the stencil buffer wherever the shape covers, whatever is there, and
+/// nothing else: no colour, no depth.
+pub const MARK_SHAPE: Recipe = Recipe {
+    name: "MARK_SHAPE",
+    depth_compare: CompareFunction::Always,
+    ..MARK_MIRROR
+};
+// ANCHOR_END: mark_shape
+
+// ANCHOR: draw_reflection
+/// Draws the mirror image only where the stencil holds the reference (1: the marked mirror), with
+/// the usual depth test, leaving the stencil as it is. (Luna: `DrawReflectionDSS`.)
+pub const DRAW_REFLECTION: Recipe = Recipe {
+    name: "DRAW_REFLECTION",
+    stencil: StencilState {
+        front: KEEP_IF_EQUAL,
+        back: KEEP_IF_EQUAL,
+        read_mask: 0xff,
+        write_mask: 0xff,
+    },
+    ..OPAQUE
+};
+
+/// The stencil test passes where the stored value equals the reference; nothing is written.
+const KEEP_IF_EQUAL: StencilFaceState = StencilFaceState {
+    compare: CompareFunction::Equal,
+    fail_op: StencilOperation::Keep,
+    depth_fail_op: StencilOperation::Keep,
+    pass_op: StencilOperation::Keep,
+};
+// ANCHOR_END: draw_reflection
 
 impl Recipe {
     /// The `DepthStencilState` of this recipe for the workbook's depth-stencil format.

@@ -1,6 +1,6 @@
-//! Looking inside the buffers: the depth buffer drawn as grey levels (`view=depth`), and the copy of
-//! depth into a readable colour texture that tests use (a depth aspect of `Depth24PlusStencil8` cannot
-//! be copied to a buffer directly).
+//! Looking inside the buffers: the depth buffer drawn as grey levels (`view=depth`), the stencil
+//! buffer in false colour (`view=stencil`), and the copy of depth into a readable colour texture that
+//! tests use (a depth aspect of `Depth24PlusStencil8` cannot be copied to a buffer directly).
 
 use wgpu::util::DeviceExt;
 
@@ -165,5 +165,171 @@ impl DepthViewPipelines {
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, bind_group, &[]);
         pass.draw(0..3, 0..1);
+    }
+}
+
+// ANCHOR: palette
+/// The false colour of a stencil value in `view=stencil` (sRGB): 0 is near black, 1 white, the next
+/// few strong distinct colours, 255 (all bits set: what `invert` and `decrement-wrap` make of 0)
+/// magenta, and the rest hues spread by the golden ratio.
+pub fn stencil_colour(value: u8) -> [u8; 3] {
+    match value {
+        0 => [24, 24, 32],
+        1 => [255, 255, 255],
+        2 => [255, 196, 0],
+        3 => [0, 180, 255],
+        4 => [235, 60, 50],
+        5 => [60, 200, 80],
+        255 => [255, 0, 255],
+        v => {
+            let hue = (v as f32 * 0.618_034).fract() * 6.0;
+            let x = 1.0 - (hue % 2.0 - 1.0).abs();
+            let (r, g, b) = match hue as u32 {
+                0 => (1.0, x, 0.0),
+                1 => (x, 1.0, 0.0),
+                2 => (0.0, 1.0, x),
+                3 => (0.0, x, 1.0),
+                4 => (x, 0.0, 1.0),
+                _ => (1.0, 0.0, x),
+            };
+            [r, g, b].map(|c| (64.0 + c * 191.0) as u8)
+        }
+    }
+}
+// ANCHOR_END: palette
+
+/// The pipeline of `view=stencil`; built once with the scene.
+pub struct StencilViewPipeline {
+    pipeline: wgpu::RenderPipeline,
+    bind_group: wgpu::BindGroup,
+}
+
+impl StencilViewPipeline {
+    pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+        let colours: Vec<[f32; 4]> = (0..=255u8)
+            .map(|v| {
+                let [r, g, b] = stencil_colour(v).map(crate::texture::srgb_to_linear);
+                [r, g, b, 1.0]
+            })
+            .collect();
+        let palette = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("stencil palette"),
+            contents: bytemuck::cast_slice(&colours),
+            usage: wgpu::BufferUsages::UNIFORM,
+        });
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("stencil view bind group layout"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("stencil view bind group"),
+            layout: &layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: palette.as_entire_binding(),
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("stencil view pipeline layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("stencil_view.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("shaders/stencil_view.wgsl").into()),
+        });
+        // Passes where the stored value equals the reference; reads the stencil, writes nothing.
+        let equal = wgpu::StencilFaceState {
+            compare: wgpu::CompareFunction::Equal,
+            fail_op: wgpu::StencilOperation::Keep,
+            depth_fail_op: wgpu::StencilOperation::Keep,
+            pass_op: wgpu::StencilOperation::Keep,
+        };
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("SHOW_STENCIL"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_value"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_value"),
+                compilation_options: Default::default(),
+                targets: &[Some(color_format.into())],
+            }),
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: crate::gpu::DEPTH_STENCIL_FORMAT,
+                depth_write_enabled: Some(false),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: wgpu::StencilState {
+                    front: equal,
+                    back: equal,
+                    read_mask: 0xff,
+                    write_mask: 0,
+                },
+                bias: wgpu::DepthBiasState::default(),
+            }),
+            multisample: wgpu::MultisampleState::default(),
+            multiview_mask: None,
+            cache: None,
+        });
+        Self {
+            pipeline,
+            bind_group,
+        }
+    }
+
+    /// Paints every pixel of `color` with the false colour of its stencil value.
+    pub fn show(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        color: &wgpu::TextureView,
+        depth_stencil: &wgpu::TextureView,
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("show stencil"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: color,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: depth_stencil,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Load,
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Load,
+                    store: wgpu::StoreOp::Store,
+                }),
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        for value in 0..=255u32 {
+            pass.set_stencil_reference(value);
+            pass.draw(0..3, value..value + 1);
+        }
     }
 }

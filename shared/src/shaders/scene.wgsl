@@ -10,6 +10,7 @@ struct Light {
 
 struct Frame {
     view_projection: mat4x4<f32>,
+    // xyz: the eye; w: the target's aspect ratio.
     eye: vec4<f32>,
     lights: array<Light, 3>,
 };
