@@ -7,4 +7,8 @@ mod assets;
 mod book;
 mod depth;
 mod knobs;
+mod mark_mirror;
+mod reflect_skull;
 mod screenshots;
+mod stencil_basics;
+mod truth_table;
