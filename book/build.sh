@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the book into book/html and fails on any ERROR or WARN that mdBook logs: mdBook itself exits 0
+# Builds the book into book/build/html and fails on any ERROR or WARN that mdBook logs: mdBook itself exits 0
 # on a missing include, a bad anchor or broken math. Needs mdbook 0.5.3, mdbook-katex 0.10.0 and
 # mdbook-linkcheck2 0.13.0 (see .ci/run), and npm for KaTeX's CSS and fonts.
 set -euo pipefail
@@ -22,8 +22,8 @@ if [ "$status" -ne 0 ]; then
   echo "book: mdbook failed (exit $status)" >&2
   exit 1
 fi
-if grep -E "ERROR|WARN" "$log" >/dev/null; then
+if grep -iE "error|warn" "$log" >/dev/null; then
   echo "book: mdbook logged errors or warnings (above); the book is not clean" >&2
   exit 1
 fi
-echo "book: built into book/html"
+echo "book: built into book/build/html"

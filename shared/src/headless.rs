@@ -72,68 +72,99 @@ impl Capture {
 
 /// Renders one frame of lesson `L`.
 pub fn render<L: Lesson>(request: &Request) -> Result<Capture> {
-    let gpu = Gpu::headless(request.backend.as_deref(), request.verbose)?;
-    check_size(&gpu, request.width, request.height)?;
-    if (request.read_stencil || request.read_depth) && !gpu.can_copy_depth_stencil() {
-        bail!(
-            "this backend ({:?}) cannot copy depth or stencil to a buffer; use Vulkan",
-            gpu.adapter.get_info().backend
+    Headless::<L>::new(request)?.capture()
+}
+
+/// A lesson ready to render headless, again and again: tests step through knob values with
+/// [`Headless::set_knobs`] without building the GPU and the room each time.
+pub struct Headless<L: Lesson> {
+    runner: Runner<L>,
+    color: wgpu::Texture,
+    read_stencil: bool,
+    read_depth: bool,
+}
+
+impl<L: Lesson> Headless<L> {
+    pub fn new(request: &Request) -> Result<Self> {
+        let gpu = Gpu::headless(request.backend.as_deref(), request.verbose)?;
+        check_size(&gpu, request.width, request.height)?;
+        if (request.read_stencil || request.read_depth) && !gpu.can_copy_depth_stencil() {
+            bail!(
+                "this backend ({:?}) cannot copy depth or stencil to a buffer; use Vulkan",
+                gpu.adapter.get_info().backend
+            );
+        }
+        let size = (request.width, request.height);
+        let runner = Runner::<L>::new(
+            gpu,
+            HEADLESS_FORMAT,
+            &request.scene,
+            request.knobs.clone(),
+            request.camera,
+            size,
+        )?;
+        let color = target(
+            &runner.gpu.device,
+            "headless colour target",
+            HEADLESS_FORMAT,
+            size,
         );
+        Ok(Self {
+            runner,
+            color,
+            read_stencil: request.read_stencil,
+            read_depth: request.read_depth,
+        })
     }
-    let size = (request.width, request.height);
-    let runner = Runner::<L>::new(
-        gpu,
-        HEADLESS_FORMAT,
-        &request.scene,
-        request.knobs.clone(),
-        request.camera,
-        size,
-    )?;
-    let device = &runner.gpu.device;
-    let color = target(device, "headless colour target", HEADLESS_FORMAT, size);
-    let color_view = color.create_view(&Default::default());
-    let mut encoder = runner.record(&color_view)?;
 
-    let mut readbacks = vec![Readback::new(
-        device,
-        &mut encoder,
-        &color,
-        wgpu::TextureAspect::All,
-        4,
-    )];
-    if request.read_stencil {
-        let stencil = &runner.depth_stencil.texture;
-        let aspect = wgpu::TextureAspect::StencilOnly;
-        readbacks.push(Readback::new(device, &mut encoder, stencil, aspect, 1));
+    /// Rebuilds the lesson for other knob values.
+    pub fn set_knobs(&mut self, knobs: Knobs) -> Result<()> {
+        self.runner.set_knobs(knobs)?;
+        self.runner.gpu.check_errors()
     }
-    if request.read_depth {
-        let depth_copy = target(device, "depth copy", DEPTH_COPY_FORMAT, size);
-        runner.copy_depth(&mut encoder, &depth_copy.create_view(&Default::default()))?;
-        let aspect = wgpu::TextureAspect::All;
-        readbacks.push(Readback::new(device, &mut encoder, &depth_copy, aspect, 4));
-    }
-    runner.gpu.queue.submit([encoder.finish()]);
-    let mut bytes = readbacks
-        .into_iter()
-        .map(|readback| readback.read(device))
-        .collect::<Result<Vec<_>>>()?
-        .into_iter();
-    runner.gpu.check_errors()?;
 
-    let mut color = RgbaImage::from_raw(request.width, request.height, bytes.next().unwrap())
-        .context("colour readback has the wrong size")?;
-    for pixel in color.pixels_mut() {
-        pixel.0[3] = 255;
+    /// Renders a frame and reads back what the request asked for.
+    pub fn capture(&self) -> Result<Capture> {
+        let (runner, size) = (&self.runner, (self.color.width(), self.color.height()));
+        let device = &runner.gpu.device;
+        let color_view = self.color.create_view(&Default::default());
+        let mut encoder = runner.record(&color_view)?;
+
+        let all = wgpu::TextureAspect::All;
+        let mut readbacks = vec![Readback::new(device, &mut encoder, &self.color, all, 4)];
+        if self.read_stencil {
+            let stencil = &runner.depth_stencil.texture;
+            let aspect = wgpu::TextureAspect::StencilOnly;
+            readbacks.push(Readback::new(device, &mut encoder, stencil, aspect, 1));
+        }
+        if self.read_depth {
+            let depth_copy = target(device, "depth copy", DEPTH_COPY_FORMAT, size);
+            runner.copy_depth(&mut encoder, &depth_copy.create_view(&Default::default()))?;
+            readbacks.push(Readback::new(device, &mut encoder, &depth_copy, all, 4));
+        }
+        runner.gpu.queue.submit([encoder.finish()]);
+        let mut bytes = readbacks
+            .into_iter()
+            .map(|readback| readback.read(device))
+            .collect::<Result<Vec<_>>>()?
+            .into_iter();
+        runner.gpu.check_errors()?;
+
+        let mut color = RgbaImage::from_raw(size.0, size.1, bytes.next().unwrap())
+            .context("colour readback has the wrong size")?;
+        for pixel in color.pixels_mut() {
+            pixel.0[3] = 255;
+        }
+        let stencil = self.read_stencil.then(|| bytes.next().unwrap());
+        let depth = self
+            .read_depth
+            .then(|| bytemuck::pod_collect_to_vec(&bytes.next().unwrap()));
+        Ok(Capture {
+            color,
+            stencil,
+            depth,
+        })
     }
-    let stencil = request.read_stencil.then(|| bytes.next().unwrap());
-    let depth = request
-        .read_depth
-        .then(|| bytemuck::pod_collect_to_vec(&bytes.next().unwrap()));
-    Ok(Capture {
-        color,
-        stencil,
-        depth,
-    })
 }
 
 /// Refuses sizes the device cannot make.

@@ -33,9 +33,9 @@ pub const FLOOR_DEPTH: f32 = 12.0;
 pub const CRATE_SIZE: f32 = 1.4;
 pub const CRATE_CENTRE: Vec3 = Vec3::new(2.2, CRATE_SIZE / 2.0, 1.6);
 /// The skull: where its bounding box's centre goes, how tall it is, how far it is turned.
-pub const SKULL_CENTRE: Vec3 = Vec3::new(-0.4, 1.4, 3.2);
-pub const SKULL_SIZE: f32 = 1.5;
-pub const SKULL_YAW_DEGREES: f32 = 35.0;
+pub const SKULL_CENTRE: Vec3 = Vec3::new(-0.5, 1.5, 2.5);
+pub const SKULL_SIZE: f32 = 1.7;
+pub const SKULL_YAW_DEGREES: f32 = 50.0;
 /// The sky: Luna's clear colour, LightSteelBlue (sRGB 176, 196, 222).
 pub const CLEAR_SRGB: [u8; 3] = [176, 196, 222];
 

@@ -3,6 +3,7 @@
 
 pub mod book;
 pub mod flip;
+pub mod geometry;
 pub mod shots;
 
 use std::path::PathBuf;

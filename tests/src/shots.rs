@@ -4,10 +4,12 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use image::RgbaImage;
+use workbook::Knobs;
 use workbook::Lesson;
-use workbook::headless::{self, Capture, Request};
+use workbook::camera::Camera;
+use workbook::headless::{self, Capture, Headless, Request};
 
 use crate::flip::{self, Threshold};
 
@@ -34,6 +36,8 @@ pub struct Shot {
     pub lesson: &'static str,
     /// Knob settings, as given to `--set`.
     pub settings: &'static [&'static str],
+    /// A camera pose other than the default, as given to `--camera`.
+    pub camera: Option<&'static str>,
     pub threshold: Threshold,
 }
 
@@ -42,27 +46,119 @@ pub const SHOTS: &[Shot] = &[
         name: "depth-test",
         lesson: "depth-test",
         settings: &[],
+        camera: None,
         threshold: STRICT,
     },
     Shot {
         name: "depth-test-always",
         lesson: "depth-test",
         settings: &["depth=always"],
+        camera: None,
         threshold: STRICT,
     },
     Shot {
         name: "depth-test-painter",
         lesson: "depth-test",
         settings: &["depth=always", "order=far-first"],
+        camera: None,
         threshold: STRICT,
     },
     Shot {
         name: "depth-test-view-depth",
         lesson: "depth-test",
         settings: &["view=depth"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "stencil-basics",
+        lesson: "stencil-basics",
+        settings: &[],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "stencil-basics-view-stencil",
+        lesson: "stencil-basics",
+        settings: &["view=stencil"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "stencil-basics-less",
+        lesson: "stencil-basics",
+        settings: &["compare=less"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "stencil-basics-always",
+        lesson: "stencil-basics",
+        settings: &["compare=always"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "stencil-basics-overdraw",
+        lesson: "stencil-basics",
+        settings: &["compare=always", "pass-op=increment-clamp", "view=stencil"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "mark-mirror",
+        lesson: "mark-mirror",
+        settings: &[],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "mark-mirror-no-depth-test",
+        lesson: "mark-mirror",
+        settings: &["mark-depth-test=off"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "mark-mirror-color",
+        lesson: "mark-mirror",
+        settings: &["view=color"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "reflect-skull",
+        lesson: "reflect-skull",
+        settings: &[],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "reflect-skull-behind",
+        lesson: "reflect-skull",
+        settings: &[],
+        camera: Some(BEHIND_THE_WALL),
+        threshold: STRICT,
+    },
+    Shot {
+        name: "reflect-skull-no-stencil-behind",
+        lesson: "reflect-skull",
+        settings: &["stencil=off"],
+        camera: Some(BEHIND_THE_WALL),
+        threshold: STRICT,
+    },
+    Shot {
+        name: "reflect-skull-unreflected-lights",
+        lesson: "reflect-skull",
+        settings: &["reflect-lights=off"],
+        camera: None,
         threshold: STRICT,
     },
 ];
+
+/// A camera behind the wall and to one side, where Luna's figure 10.1 looks from: the reflected
+/// skull stands between it and the wall's back.
+pub const BEHIND_THE_WALL: &str = "140,12,10";
 
 impl Shot {
     pub fn path(&self) -> PathBuf {
@@ -78,12 +174,19 @@ impl Shot {
         for setting in self.settings {
             command += &format!(" --set {setting}");
         }
+        if let Some(camera) = self.camera {
+            command += &format!(" --camera {camera}");
+        }
         command + &format!(" --screenshot {}.png", self.name)
     }
 
     pub fn render(&self) -> Result<RgbaImage> {
+        let camera = self.camera.map(Camera::parse).transpose()?;
         let capture = render(self.lesson, self.settings, |request| {
             (request.width, request.height) = SIZE;
+            if let Some(camera) = camera {
+                request.camera = camera;
+            }
         })?;
         Ok(capture.color)
     }
@@ -95,12 +198,20 @@ impl Shot {
 }
 
 /// Every lesson by package name, in the book's order.
-pub const LESSONS: &[&str] = &["depth-test"];
+pub const LESSONS: &[&str] = &[
+    "depth-test",
+    "stencil-basics",
+    "mark-mirror",
+    "reflect-skull",
+];
 
 /// The knobs of a lesson, by package name.
 pub fn knobs(lesson: &str) -> Result<&'static [workbook::Knob]> {
     Ok(match lesson {
         "depth-test" => depth_test::DepthTest::KNOBS,
+        "stencil-basics" => stencil_basics::StencilBasics::KNOBS,
+        "mark-mirror" => mark_mirror::MarkMirror::KNOBS,
+        "reflect-skull" => reflect_skull::ReflectSkull::KNOBS,
         other => bail!("there is no lesson called `{other}`"),
     })
 }
@@ -118,6 +229,38 @@ pub fn render(
     }
     match lesson {
         "depth-test" => go::<depth_test::DepthTest>(settings, adjust),
+        "stencil-basics" => go::<stencil_basics::StencilBasics>(settings, adjust),
+        "mark-mirror" => go::<mark_mirror::MarkMirror>(settings, adjust),
+        "reflect-skull" => go::<reflect_skull::ReflectSkull>(settings, adjust),
+        other => bail!("there is no lesson called `{other}`"),
+    }
+}
+
+/// Renders lesson `lesson` once per entry of `each` (knob settings), building the GPU and the room
+/// once; fails on the first setting that fails.
+pub fn render_each(
+    lesson: &str,
+    each: &[Vec<String>],
+    adjust: impl FnOnce(&mut Request),
+) -> Result<()> {
+    fn go<L: Lesson>(each: &[Vec<String>], adjust: impl FnOnce(&mut Request)) -> Result<()> {
+        let mut request = Request::new::<L>(&[] as &[&str])?;
+        adjust(&mut request);
+        let mut headless = Headless::<L>::new(&request)?;
+        for settings in each {
+            let knobs = Knobs::from_settings(L::KNOBS, settings)?;
+            headless
+                .set_knobs(knobs)
+                .and_then(|()| headless.capture())
+                .with_context(|| format!("--set {}", settings.join(" --set ")))?;
+        }
+        Ok(())
+    }
+    match lesson {
+        "depth-test" => go::<depth_test::DepthTest>(each, adjust),
+        "stencil-basics" => go::<stencil_basics::StencilBasics>(each, adjust),
+        "mark-mirror" => go::<mark_mirror::MarkMirror>(each, adjust),
+        "reflect-skull" => go::<reflect_skull::ReflectSkull>(each, adjust),
         other => bail!("there is no lesson called `{other}`"),
     }
 }

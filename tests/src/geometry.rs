@@ -1,0 +1,116 @@
+//! Independent expectations: where things land on screen, computed on the CPU from the camera and the
+//! room's dimensions alone — never from a render.
+
+use glam::{Mat4, Vec3, Vec4Swizzles};
+use workbook::camera::Camera;
+
+/// A camera looking at a target of a given size in pixels.
+#[derive(Debug, Clone, Copy)]
+pub struct View {
+    pub camera: Camera,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl View {
+    pub fn new(camera: Camera, width: u32, height: u32) -> Self {
+        Self {
+            camera,
+            width,
+            height,
+        }
+    }
+
+    pub fn view_projection(&self) -> Mat4 {
+        self.camera
+            .view_projection(self.width as f32 / self.height as f32)
+    }
+
+    /// The ray from the eye through the centre of pixel (x, y): origin on the near plane, unit direction.
+    pub fn ray(&self, x: u32, y: u32) -> (Vec3, Vec3) {
+        let inverse = self.view_projection().inverse();
+        let ndc_x = (x as f32 + 0.5) / self.width as f32 * 2.0 - 1.0;
+        let ndc_y = 1.0 - (y as f32 + 0.5) / self.height as f32 * 2.0;
+        let unproject = |z: f32| {
+            let p = inverse * glam::Vec4::new(ndc_x, ndc_y, z, 1.0);
+            p.xyz() / p.w
+        };
+        let (near, far) = (unproject(0.0), unproject(1.0));
+        (near, (far - near).normalize())
+    }
+
+    /// Where wgpu's depth range puts a world point: clip z / clip w, 0 at the near plane, 1 at the far.
+    pub fn depth_of(&self, point: Vec3) -> f32 {
+        let clip = self.view_projection() * point.extend(1.0);
+        clip.z / clip.w
+    }
+
+    /// The pixel a world point lands in.
+    pub fn pixel_of(&self, point: Vec3) -> (u32, u32) {
+        let clip = self.view_projection() * point.extend(1.0);
+        let ndc = clip.xyz() / clip.w;
+        (
+            ((ndc.x + 1.0) / 2.0 * self.width as f32) as u32,
+            ((1.0 - ndc.y) / 2.0 * self.height as f32) as u32,
+        )
+    }
+
+    /// Every pixel, in rows.
+    pub fn pixels(&self) -> impl Iterator<Item = (u32, u32)> + use<> {
+        let (w, h) = (self.width, self.height);
+        (0..h).flat_map(move |y| (0..w).map(move |x| (x, y)))
+    }
+
+    /// Whether `classify` gives pixel (x, y) the same answer as its four neighbours: pixels on an edge
+    /// may go either way under the rasteriser's rules, so tests skip them.
+    pub fn inside_region<T: PartialEq>(
+        &self,
+        x: u32,
+        y: u32,
+        classify: impl Fn(u32, u32) -> T,
+    ) -> bool {
+        let here = classify(x, y);
+        [(0i32, 1i32), (1, 0), (0, -1), (-1, 0)]
+            .iter()
+            .all(|&(dx, dy)| {
+                let (nx, ny) = (x as i32 + dx, y as i32 + dy);
+                let outside =
+                    nx < 0 || ny < 0 || nx >= self.width as i32 || ny >= self.height as i32;
+                outside || classify(nx as u32, ny as u32) == here
+            })
+    }
+}
+
+/// Where the ray meets the plane z = 0 inside the rectangle `min`..`max` (x and y), if it does.
+pub fn hit_z0_rect(origin: Vec3, direction: Vec3, min: Vec3, max: Vec3) -> Option<f32> {
+    let t = -origin.z / direction.z;
+    let p = origin + direction * t;
+    let inside = (min.x..=max.x).contains(&p.x) && (min.y..=max.y).contains(&p.y);
+    (t > 0.0 && inside).then_some(t)
+}
+
+/// Where the ray meets the plane y = 0 inside x in `x_range` and z in `z_range`, if it does.
+pub fn hit_y0_rect(
+    origin: Vec3,
+    direction: Vec3,
+    x_range: std::ops::RangeInclusive<f32>,
+    z_range: std::ops::RangeInclusive<f32>,
+) -> Option<f32> {
+    let t = -origin.y / direction.y;
+    let p = origin + direction * t;
+    (t > 0.0 && x_range.contains(&p.x) && z_range.contains(&p.z)).then_some(t)
+}
+
+/// Where the ray enters an axis-aligned box, if it does (the slab test).
+pub fn hit_box(origin: Vec3, direction: Vec3, min: Vec3, max: Vec3) -> Option<f32> {
+    let inverse = direction.recip();
+    let (a, b) = ((min - origin) * inverse, (max - origin) * inverse);
+    let (near, far) = (a.min(b).max_element(), a.max(b).min_element());
+    (near <= far && far > 0.0).then_some(near.max(0.0))
+}
+
+/// Whether the ray passes within `radius` of `centre`.
+pub fn passes_near(origin: Vec3, direction: Vec3, centre: Vec3, radius: f32) -> bool {
+    let along = (centre - origin).dot(direction);
+    (origin + direction * along).distance(centre) < radius
+}
