@@ -6,6 +6,7 @@
 
 use anyhow::Result;
 
+use crate::camera::Camera;
 use crate::gpu::{DepthStencil, Gpu};
 use crate::knobs::{Knob, Knobs};
 use crate::scene::{self, Scene};
@@ -41,6 +42,8 @@ pub enum Start {
 pub struct Frame<'a> {
     pub gpu: &'a Gpu,
     pub scene: &'a Scene,
+    /// Where the camera is this frame (for sorting transparent objects back to front).
+    pub camera: Camera,
     pub encoder: wgpu::CommandEncoder,
     pub color: &'a wgpu::TextureView,
     pub depth_stencil: &'a DepthStencil,

@@ -75,6 +75,7 @@ impl<L: Lesson> Runner<L> {
         let mut frame = Frame {
             gpu: &self.gpu,
             scene: &self.scene,
+            camera: self.camera,
             encoder,
             color,
             depth_stencil: &self.depth_stencil,

@@ -32,12 +32,21 @@ pub const FLOOR_DEPTH: f32 = 12.0;
 /// The crate: a cube standing on the floor, in front of the mirror's lower right corner.
 pub const CRATE_SIZE: f32 = 1.4;
 pub const CRATE_CENTRE: Vec3 = Vec3::new(2.2, CRATE_SIZE / 2.0, 1.6);
+/// The wire-fence crate, to the left in front of the mirror.
+pub const FENCE_SIZE: f32 = 1.6;
+pub const FENCE_CENTRE: Vec3 = Vec3::new(-3.4, FENCE_SIZE / 2.0, 2.4);
+/// The water: a shallow pool on the floor that runs up to the mirror, its surface 25 cm above the
+/// tiles, so the mirror's lowest strip is seen through it.
+pub const WATER_MIN: Vec3 = Vec3::new(-1.5, 0.25, 0.0);
+pub const WATER_MAX: Vec3 = Vec3::new(1.2, 0.25, 2.8);
 /// The skull: where its bounding box's centre goes, how tall it is, how far it is turned.
 pub const SKULL_CENTRE: Vec3 = Vec3::new(-0.5, 1.5, 2.5);
 pub const SKULL_SIZE: f32 = 1.7;
 pub const SKULL_YAW_DEGREES: f32 = 50.0;
-/// The sky: Luna's clear colour, LightSteelBlue (sRGB 176, 196, 222).
-pub const CLEAR_SRGB: [u8; 3] = [176, 196, 222];
+/// The sky, what every frame is cleared to: a dark slate (Luna clears to a light steel blue). Dark,
+/// so that a mirror with nothing reflected in it yet reads as dark glass, and what is missing from a
+/// reflection shows as a dark gap.
+pub const CLEAR_SRGB: [u8; 3] = [36, 42, 56];
 
 /// A surface's response to light, as Luna's `Material`.
 #[derive(Debug, Clone, Copy)]
@@ -48,6 +57,8 @@ pub struct Material {
     pub alpha: f32,
     pub specular: Vec3,
     pub shininess: f32,
+    /// Texels whose alpha is below this are thrown away (0: none are); the wire fence's holes.
+    pub alpha_cutoff: f32,
 }
 
 /// Luna's room and skull material: half ambient, full diffuse, a dull highlight.
@@ -57,6 +68,7 @@ pub const ROOM_MATERIAL: Material = Material {
     alpha: 1.0,
     specular: Vec3::splat(0.4),
     shininess: 16.0,
+    alpha_cutoff: 0.0,
 };
 pub const SKULL_MATERIAL: Material = Material {
     ambient: Vec3::splat(0.5),
@@ -64,9 +76,23 @@ pub const SKULL_MATERIAL: Material = Material {
     alpha: 1.0,
     specular: Vec3::splat(0.4),
     shininess: 24.0,
+    alpha_cutoff: 0.0,
 };
 pub const MIRROR_MATERIAL: Material = Material {
     alpha: 0.5,
+    ..ROOM_MATERIAL
+};
+/// Water lets half the light through.
+pub const WATER_MATERIAL: Material = Material {
+    alpha: 0.5,
+    specular: Vec3::splat(0.8),
+    shininess: 64.0,
+    ..ROOM_MATERIAL
+};
+/// The wire fence: opaque wires, holes cut where the texture's alpha is below 0.1, the soft edges
+/// in between blended.
+pub const FENCE_MATERIAL: Material = Material {
+    alpha_cutoff: 0.1,
     ..ROOM_MATERIAL
 };
 
@@ -161,6 +187,9 @@ pub struct Drawable {
     mesh: GpuMesh,
     bind_group: wgpu::BindGroup,
     reflected: wgpu::BindGroup,
+    /// The uniform buffers of both bind groups, with what they hold.
+    uniforms: [(wgpu::Buffer, ObjectUniform); 2],
+    centre: Vec3,
 }
 
 impl Drawable {
@@ -176,6 +205,22 @@ impl Drawable {
         pass.set_bind_group(1, &self.reflected, &[]);
         self.mesh.draw(pass);
     }
+
+    /// The centre of the object's bounding box, in the world.
+    pub fn centre(&self) -> Vec3 {
+        self.centre
+    }
+
+    /// Changes the material's alpha (for the object and its mirror image).
+    pub fn set_alpha(&self, queue: &wgpu::Queue, alpha: f32) {
+        for (buffer, uniform) in &self.uniforms {
+            let uniform = ObjectUniform {
+                diffuse: uniform.diffuse.truncate().extend(alpha),
+                ..*uniform
+            };
+            queue.write_buffer(buffer, 0, bytemuck::bytes_of(&uniform));
+        }
+    }
 }
 
 /// The room on the GPU, and the layouts every lesson's pipelines share.
@@ -186,6 +231,9 @@ pub struct Scene {
     pub mirror: Drawable,
     pub crate_box: Drawable,
     pub skull: Drawable,
+    /// Lesson 7's transparent objects.
+    pub fence_box: Drawable,
+    pub water: Drawable,
     frame_buffer: wgpu::Buffer,
     pub(crate) frame_bind_group: wgpu::BindGroup,
     reflected_frame_buffer: wgpu::Buffer,
@@ -217,6 +265,7 @@ impl Scene {
             image("ice.png")?,
             image("crate.png")?,
         );
+        let (fence_image, water_image) = (image("wirefence.png")?, image("water.png")?);
 
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("frame bind group layout"),
@@ -291,21 +340,21 @@ impl Scene {
                       picture: &image::RgbaImage,
                       repeat: Vec2| {
             let view = texture::upload(device, queue, &format!("{name} texture"), picture);
-            let bind_group = |label: String, world: Mat4| {
+            let make = |label: String, world: Mat4| {
                 let uniform = ObjectUniform {
                     world,
                     normal_matrix: normal_matrix(world),
                     ambient: material.ambient.extend(1.0),
                     diffuse: material.diffuse.extend(material.alpha),
                     specular: material.specular.extend(material.shininess),
-                    params: Vec4::new(repeat.x, repeat.y, 0.0, 0.0),
+                    params: Vec4::new(repeat.x, repeat.y, material.alpha_cutoff, 0.0),
                 };
                 let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                     label: Some(&format!("{label} uniforms")),
                     contents: bytemuck::bytes_of(&uniform),
-                    usage: wgpu::BufferUsages::UNIFORM,
+                    usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
                 });
-                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some(&format!("{label} bind group")),
                     layout: &object_layout,
                     entries: &[
@@ -322,18 +371,24 @@ impl Scene {
                             resource: wgpu::BindingResource::Sampler(&sampler),
                         },
                     ],
-                })
+                });
+                (group, (buffer, uniform))
             };
             // ANCHOR: reflected_world
             // The mirror image of an object: first its own world matrix, then the reflection.
             // (Column vectors: R * world. DirectXMath's row vectors write it world * R.)
             let reflected_world = mirror_reflection() * world;
             // ANCHOR_END: reflected_world
+            let (bind_group, normal) = make(name.to_string(), world);
+            let (reflected, mirrored) = make(format!("reflected {name}"), reflected_world);
+            let (min, max) = mesh.bounds();
             Drawable {
                 name,
                 mesh: GpuMesh::new(device, name, mesh),
-                bind_group: bind_group(name.to_string(), world),
-                reflected: bind_group(format!("reflected {name}"), reflected_world),
+                bind_group,
+                reflected,
+                uniforms: [normal, mirrored],
+                centre: world.transform_point3((min + max) / 2.0),
             }
         };
 
@@ -377,6 +432,30 @@ impl Scene {
             &white,
             Vec2::ONE,
         );
+        let fence_box = object(
+            "wire-fence crate",
+            &MeshData::cuboid(Vec3::splat(FENCE_SIZE)),
+            Mat4::from_translation(FENCE_CENTRE),
+            FENCE_MATERIAL,
+            &fence_image,
+            Vec2::ONE,
+        );
+        let water_size = WATER_MAX - WATER_MIN;
+        let mut water_mesh = MeshData::default();
+        water_mesh.add_quad(
+            Vec3::new(WATER_MIN.x, WATER_MIN.y, WATER_MAX.z),
+            Vec3::X * water_size.x,
+            -Vec3::Z * water_size.z,
+            Vec2::new(water_size.x, water_size.z) / 2.0,
+        );
+        let water = object(
+            "water",
+            &water_mesh,
+            Mat4::IDENTITY,
+            WATER_MATERIAL,
+            &water_image,
+            Vec2::ONE,
+        );
         let depth_view = crate::views::DepthViewPipelines::supported(adapter)
             .then(|| crate::views::DepthViewPipelines::new(device, color_format));
         Ok(Self {
@@ -386,6 +465,8 @@ impl Scene {
             mirror,
             crate_box,
             skull,
+            fence_box,
+            water,
             frame_buffer,
             frame_bind_group,
             reflected_frame_buffer,
@@ -451,6 +532,14 @@ impl Scene {
             0,
             bytemuck::bytes_of(&reflected),
         );
+    }
+
+    /// Draws the room's solid objects — floor, wall, crate and skull, all but the mirror — with the
+    /// pipeline already set. The mirror lessons start every frame with it.
+    pub fn draw_room(&self, pass: &mut wgpu::RenderPass<'_>) {
+        for object in [&self.floor, &self.wall, &self.crate_box, &self.skull] {
+            object.draw(pass);
+        }
     }
 
     /// Binds the frame's camera and lights (group 0).

@@ -117,6 +117,43 @@ const KEEP_IF_EQUAL: StencilFaceState = StencilFaceState {
 };
 // ANCHOR_END: draw_reflection
 
+// ANCHOR: cull_clockwise
+/// DRAW_REFLECTION for mirror images: a reflection (determinant −1) turns counter-clockwise
+/// triangles clockwise on screen, so the triangles that face the camera are now the clockwise ones.
+/// (Luna: `DrawReflectionDSS` with `CullClockwiseRS`, which tells D3D counter-clockwise is front.)
+pub const CULL_CLOCKWISE: Recipe = Recipe {
+    name: "CULL_CLOCKWISE",
+    front_face: FrontFace::Cw,
+    ..DRAW_REFLECTION
+};
+// ANCHOR_END: cull_clockwise
+
+// ANCHOR: transparent
+/// See-through surfaces: the usual depth test, and the colour mixed with what is already there,
+/// C = a·Csrc + (1 − a)·Cdst, a the fragment's alpha. (Luna: `TransparentBS`.)
+pub const TRANSPARENT: Recipe = Recipe {
+    name: "TRANSPARENT",
+    blend: Some(BlendState::ALPHA_BLENDING),
+    ..OPAQUE
+};
+
+/// TRANSPARENT seen from both sides, for the wire-fence crate (whose far side shows through its
+/// holes) and the water. (Luna and MKXJun: `NoCullRS` with `TransparentBS`.)
+pub const TRANSPARENT_NO_CULL: Recipe = Recipe {
+    name: "TRANSPARENT_NO_CULL",
+    cull_mode: None,
+    ..TRANSPARENT
+};
+
+/// The mirror images of see-through objects: TRANSPARENT_NO_CULL where the stencil holds the
+/// reference. (Both sides are drawn, so the flipped winding does not matter.)
+pub const REFLECTED_TRANSPARENT: Recipe = Recipe {
+    name: "REFLECTED_TRANSPARENT",
+    stencil: DRAW_REFLECTION.stencil,
+    ..TRANSPARENT_NO_CULL
+};
+// ANCHOR_END: transparent
+
 impl Recipe {
     /// The `DepthStencilState` of this recipe for the workbook's depth-stencil format.
     pub fn depth_stencil(&self) -> wgpu::DepthStencilState {

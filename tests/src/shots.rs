@@ -154,6 +154,55 @@ pub const SHOTS: &[Shot] = &[
         camera: None,
         threshold: STRICT,
     },
+    Shot {
+        name: "winding-fix",
+        lesson: "winding-fix",
+        settings: &[],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "winding-fix-off",
+        lesson: "winding-fix",
+        settings: &["winding-fix=off"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "transparent-mirror",
+        lesson: "transparent-mirror",
+        settings: &[],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "transparent-mirror-opaque",
+        lesson: "transparent-mirror",
+        settings: &["blend=off"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "transparent-mirror-alpha-0.25",
+        lesson: "transparent-mirror",
+        settings: &["mirror-alpha=0.25"],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "drawing-order",
+        lesson: "drawing-order",
+        settings: &[],
+        camera: None,
+        threshold: STRICT,
+    },
+    Shot {
+        name: "drawing-order-luna",
+        lesson: "drawing-order",
+        settings: &["order=luna"],
+        camera: None,
+        threshold: STRICT,
+    },
 ];
 
 /// A camera behind the wall and to one side, where Luna's figure 10.1 looks from: the reflected
@@ -203,6 +252,9 @@ pub const LESSONS: &[&str] = &[
     "stencil-basics",
     "mark-mirror",
     "reflect-skull",
+    "winding-fix",
+    "transparent-mirror",
+    "drawing-order",
 ];
 
 /// The knobs of a lesson, by package name.
@@ -212,6 +264,9 @@ pub fn knobs(lesson: &str) -> Result<&'static [workbook::Knob]> {
         "stencil-basics" => stencil_basics::StencilBasics::KNOBS,
         "mark-mirror" => mark_mirror::MarkMirror::KNOBS,
         "reflect-skull" => reflect_skull::ReflectSkull::KNOBS,
+        "winding-fix" => winding_fix::WindingFix::KNOBS,
+        "transparent-mirror" => transparent_mirror::TransparentMirror::KNOBS,
+        "drawing-order" => drawing_order::DrawingOrder::KNOBS,
         other => bail!("there is no lesson called `{other}`"),
     })
 }
@@ -232,6 +287,9 @@ pub fn render(
         "stencil-basics" => go::<stencil_basics::StencilBasics>(settings, adjust),
         "mark-mirror" => go::<mark_mirror::MarkMirror>(settings, adjust),
         "reflect-skull" => go::<reflect_skull::ReflectSkull>(settings, adjust),
+        "winding-fix" => go::<winding_fix::WindingFix>(settings, adjust),
+        "transparent-mirror" => go::<transparent_mirror::TransparentMirror>(settings, adjust),
+        "drawing-order" => go::<drawing_order::DrawingOrder>(settings, adjust),
         other => bail!("there is no lesson called `{other}`"),
     }
 }
@@ -261,6 +319,9 @@ pub fn render_each(
         "stencil-basics" => go::<stencil_basics::StencilBasics>(each, adjust),
         "mark-mirror" => go::<mark_mirror::MarkMirror>(each, adjust),
         "reflect-skull" => go::<reflect_skull::ReflectSkull>(each, adjust),
+        "winding-fix" => go::<winding_fix::WindingFix>(each, adjust),
+        "transparent-mirror" => go::<transparent_mirror::TransparentMirror>(each, adjust),
+        "drawing-order" => go::<drawing_order::DrawingOrder>(each, adjust),
         other => bail!("there is no lesson called `{other}`"),
     }
 }

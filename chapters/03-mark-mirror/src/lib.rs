@@ -63,9 +63,7 @@ impl Lesson for MarkMirror {
         // 2. Draw the room as usual, all but the mirror: the crate and the skull now hold the depth
         //    of everything in front of the mirror.
         pass.set_pipeline(&self.draw_room);
-        for object in [&scene.floor, &scene.wall, &scene.crate_box, &scene.skull] {
-            object.draw(&mut pass);
-        }
+        scene.draw_room(&mut pass);
 
         // 3. Mark the mirror: MARK_MIRROR writes the reference, 1, into the stencil buffer wherever a
         //    mirror fragment passes the depth test. It writes no colour, so the mirror's pixels still

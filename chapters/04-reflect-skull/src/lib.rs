@@ -64,9 +64,7 @@ impl Lesson for ReflectSkull {
 
         // 2. Draw the room as usual, all but the mirror.
         pass.set_pipeline(&self.draw_room);
-        for object in [&scene.floor, &scene.wall, &scene.crate_box, &scene.skull] {
-            object.draw(&mut pass);
-        }
+        scene.draw_room(&mut pass);
 
         // 3. Mark the mirror's visible pixels with 1 (lesson 3).
         pass.set_pipeline(&self.mark_mirror);

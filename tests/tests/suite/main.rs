@@ -6,9 +6,12 @@
 mod assets;
 mod book;
 mod depth;
+mod drawing_order;
 mod knobs;
 mod mark_mirror;
 mod reflect_skull;
 mod screenshots;
 mod stencil_basics;
+mod transparent_mirror;
 mod truth_table;
+mod winding_fix;

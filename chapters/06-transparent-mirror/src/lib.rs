@@ -1,0 +1,85 @@
+//! Lesson 6: the transparent mirror.
+//!
+//! A real mirror is glass: its own colour over what it reflects. The mirror is drawn last, blended
+//! over the reflection with its material's alpha a: C = a·Cmirror + (1 − a)·Creflection.
+
+use workbook::wgpu;
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, Start, knobs, states};
+
+pub struct TransparentMirror {
+    draw_room: wgpu::RenderPipeline,
+    mark_mirror: wgpu::RenderPipeline,
+    draw_reflection: wgpu::RenderPipeline,
+    draw_mirror: wgpu::RenderPipeline,
+}
+
+// ANCHOR: knobs
+pub const KNOBS: &[Knob] = &[
+    Knob {
+        name: "mirror-alpha",
+        values: &["0", "0.25", "0.5", "0.75", "1"],
+        default: "0.5",
+        meaning: "the mirror material's alpha: how much of the glass's own colour covers the reflection",
+    },
+    Knob {
+        name: "blend",
+        values: knobs::ON_OFF,
+        default: "on",
+        meaning: "whether the mirror is blended; off, the opaque glass hides the reflection",
+    },
+];
+// ANCHOR_END: knobs
+
+impl Lesson for TransparentMirror {
+    const NAME: &'static str = "transparent-mirror";
+    const TITLE: &'static str = "Lesson 6: the transparent mirror";
+    const KNOBS: &'static [Knob] = KNOBS;
+
+    fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
+        // ANCHOR: recipes
+        // The glass's alpha is part of its material, set here from the knob.
+        let alpha: f32 = knobs.get("mirror-alpha").parse()?;
+        scene.mirror.set_alpha(&gpu.queue, alpha);
+        let draw_mirror = if knobs.is_on("blend") {
+            states::TRANSPARENT
+        } else {
+            // The wrong way: the glass replaces whatever the mirror reflected.
+            states::OPAQUE
+        };
+        // ANCHOR_END: recipes
+        Ok(Self {
+            draw_room: scene.pipeline(&gpu.device, &states::OPAQUE),
+            mark_mirror: scene.pipeline(&gpu.device, &states::MARK_MIRROR),
+            draw_reflection: scene.pipeline(&gpu.device, &states::CULL_CLOCKWISE),
+            draw_mirror: scene.pipeline(&gpu.device, &draw_mirror),
+        })
+    }
+
+    // ANCHOR: render
+    fn render(&self, frame: &mut Frame<'_>) {
+        let scene = frame.scene;
+        // 1. Clear colour, depth (to 1.0) and stencil (to 0).
+        let mut pass = frame.pass("transparent mirror", Start::Cleared);
+
+        // 2. Draw the room as usual, all but the mirror.
+        pass.set_pipeline(&self.draw_room);
+        scene.draw_room(&mut pass);
+
+        // 3. Mark the mirror's visible pixels with 1 (lesson 3).
+        pass.set_pipeline(&self.mark_mirror);
+        pass.set_stencil_reference(1);
+        scene.mirror.draw(&mut pass);
+
+        // 4. Draw the reflected skull where the stencil is 1, right side out (lessons 4 and 5).
+        pass.set_pipeline(&self.draw_reflection);
+        scene.bind_reflected_frame(&mut pass);
+        scene.skull.draw_reflected(&mut pass);
+
+        // 5. Draw the mirror itself, last, with TRANSPARENT: its colour mixed over the reflection,
+        //    a·Cmirror + (1 − a)·Creflection. The depth test keeps it behind the crate and the skull.
+        pass.set_pipeline(&self.draw_mirror);
+        scene.bind_frame(&mut pass);
+        scene.mirror.draw(&mut pass);
+    }
+    // ANCHOR_END: render
+}
