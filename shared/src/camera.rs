@@ -24,15 +24,17 @@ pub struct Camera {
     pub distance: f32,
 }
 
+/// The pose of the book's screenshots: a little to the right and above, the crate hiding the
+/// mirror's lower right corner, the skull in front of the mirror.
+pub const BOOK_POSE: Camera = Camera {
+    yaw: 22.0,
+    pitch: 14.0,
+    distance: 11.0,
+};
+
 impl Default for Camera {
-    /// The pose of the book's screenshots: a little to the right and above, the crate hiding the
-    /// mirror's lower right corner, the skull in front of the mirror.
     fn default() -> Self {
-        Self {
-            yaw: 22.0,
-            pitch: 14.0,
-            distance: 11.0,
-        }
+        BOOK_POSE
     }
 }
 

@@ -176,26 +176,14 @@ pub fn check_size(gpu: &Gpu, width: u32, height: u32) -> Result<()> {
     Ok(())
 }
 
+/// A target the readback can copy from.
 fn target(
     device: &wgpu::Device,
     label: &str,
     format: wgpu::TextureFormat,
-    (width, height): (u32, u32),
+    size: (u32, u32),
 ) -> wgpu::Texture {
-    device.create_texture(&wgpu::TextureDescriptor {
-        label: Some(label),
-        size: wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    })
+    crate::gpu::target_texture(device, label, format, size, wgpu::TextureUsages::COPY_SRC)
 }
 
 /// Copies one aspect of a texture (mip 0) to the CPU and waits for it: rows top to bottom, without

@@ -11,6 +11,7 @@ pub mod headless;
 pub mod knobs;
 pub mod lesson;
 pub mod mesh;
+pub mod mirror;
 pub mod reflect;
 pub mod runner;
 pub mod scene;

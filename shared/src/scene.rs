@@ -647,7 +647,8 @@ fn mirror_mesh() -> MeshData {
     mesh
 }
 
-fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+/// A uniform buffer at `binding`, read by vertex and fragment shaders.
+pub(crate) fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,
         visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,

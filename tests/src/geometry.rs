@@ -13,7 +13,7 @@ pub struct View {
 }
 
 impl View {
-    pub fn new(camera: Camera, width: u32, height: u32) -> Self {
+    pub const fn new(camera: Camera, width: u32, height: u32) -> Self {
         Self {
             camera,
             width,

@@ -9,7 +9,7 @@ use image::RgbaImage;
 use workbook::Knobs;
 use workbook::Lesson;
 use workbook::camera::Camera;
-use workbook::headless::{self, Capture, Headless, Request};
+use workbook::headless::{Capture, Headless, Request};
 
 use crate::flip::{self, Threshold};
 
@@ -277,21 +277,9 @@ pub fn render(
     settings: &[&str],
     adjust: impl FnOnce(&mut Request),
 ) -> Result<Capture> {
-    fn go<L: Lesson>(settings: &[&str], adjust: impl FnOnce(&mut Request)) -> Result<Capture> {
-        let mut request = Request::new::<L>(settings)?;
-        adjust(&mut request);
-        headless::render::<L>(&request)
-    }
-    match lesson {
-        "depth-test" => go::<depth_test::DepthTest>(settings, adjust),
-        "stencil-basics" => go::<stencil_basics::StencilBasics>(settings, adjust),
-        "mark-mirror" => go::<mark_mirror::MarkMirror>(settings, adjust),
-        "reflect-skull" => go::<reflect_skull::ReflectSkull>(settings, adjust),
-        "winding-fix" => go::<winding_fix::WindingFix>(settings, adjust),
-        "transparent-mirror" => go::<transparent_mirror::TransparentMirror>(settings, adjust),
-        "drawing-order" => go::<drawing_order::DrawingOrder>(settings, adjust),
-        other => bail!("there is no lesson called `{other}`"),
-    }
+    let settings: Vec<String> = settings.iter().map(|s| s.to_string()).collect();
+    let mut captures = render_each(lesson, &[settings], adjust)?;
+    Ok(captures.remove(0))
 }
 
 /// Renders lesson `lesson` once per entry of `each` (knob settings), building the GPU and the room
@@ -300,19 +288,30 @@ pub fn render_each(
     lesson: &str,
     each: &[Vec<String>],
     adjust: impl FnOnce(&mut Request),
-) -> Result<()> {
-    fn go<L: Lesson>(each: &[Vec<String>], adjust: impl FnOnce(&mut Request)) -> Result<()> {
-        let mut request = Request::new::<L>(&[] as &[&str])?;
+) -> Result<Vec<Capture>> {
+    fn go<L: Lesson>(
+        each: &[Vec<String>],
+        adjust: impl FnOnce(&mut Request),
+    ) -> Result<Vec<Capture>> {
+        let first = each.first().map(Vec::as_slice).unwrap_or_default();
+        let mut request = Request::new::<L>(first)?;
         adjust(&mut request);
         let mut headless = Headless::<L>::new(&request)?;
-        for settings in each {
+        let mut captures = Vec::with_capacity(each.len());
+        for (index, settings) in each.iter().enumerate() {
             let knobs = Knobs::from_settings(L::KNOBS, settings)?;
-            headless
-                .set_knobs(knobs)
+            // The first settings were built with the request already.
+            let rebuilt = if index == 0 {
+                Ok(())
+            } else {
+                headless.set_knobs(knobs)
+            };
+            let capture = rebuilt
                 .and_then(|()| headless.capture())
-                .with_context(|| format!("--set {}", settings.join(" --set ")))?;
+                .with_context(|| format!("{} --set {}", L::NAME, settings.join(" --set ")))?;
+            captures.push(capture);
         }
-        Ok(())
+        Ok(captures)
     }
     match lesson {
         "depth-test" => go::<depth_test::DepthTest>(each, adjust),

@@ -4,12 +4,12 @@
 //! reflected lights, only where lesson 3's mark holds 1. This lesson keeps the usual front face, so
 //! the reflection comes out inside out: lesson 5 fixes that.
 
+use workbook::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Start, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states};
 
 pub struct ReflectSkull {
-    draw_room: wgpu::RenderPipeline,
-    mark_mirror: wgpu::RenderPipeline,
+    marked_room: MarkedRoom,
     draw_reflection: wgpu::RenderPipeline,
     reflect_lights: bool,
 }
@@ -49,8 +49,7 @@ impl Lesson for ReflectSkull {
         };
         // ANCHOR_END: recipes
         Ok(Self {
-            draw_room: scene.pipeline(&gpu.device, &states::OPAQUE),
-            mark_mirror: scene.pipeline(&gpu.device, &states::MARK_MIRROR),
+            marked_room: MarkedRoom::new(gpu, scene),
             draw_reflection: scene.pipeline(&gpu.device, &draw_reflection),
             reflect_lights: knobs.is_on("reflect-lights"),
         })
@@ -59,17 +58,9 @@ impl Lesson for ReflectSkull {
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1. Clear colour, depth (to 1.0) and stencil (to 0).
-        let mut pass = frame.pass("reflect skull", Start::Cleared);
-
-        // 2. Draw the room as usual, all but the mirror.
-        pass.set_pipeline(&self.draw_room);
-        scene.draw_room(&mut pass);
-
-        // 3. Mark the mirror's visible pixels with 1 (lesson 3).
-        pass.set_pipeline(&self.mark_mirror);
-        pass.set_stencil_reference(1);
-        scene.mirror.draw(&mut pass);
+        // 1-3. Clear, draw the room but the mirror, mark the mirror's visible pixels with 1
+        //      (lesson 3's frame, kept in the framework as MarkedRoom).
+        let mut pass = self.marked_room.begin(frame, "reflect skull");
 
         // 4. Draw the skull again, reflected in the mirror's plane (world matrix R * world) and lit
         //    by the reflected lights, with DRAW_REFLECTION: only where the stencil equals the

@@ -4,12 +4,12 @@
 //! reflected pass tells the rasterizer that clockwise is the front (CULL_CLOCKWISE), and the mirror
 //! shows the skull's outside again.
 
+use workbook::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Start, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, states};
 
 pub struct WindingFix {
-    draw_room: wgpu::RenderPipeline,
-    mark_mirror: wgpu::RenderPipeline,
+    marked_room: MarkedRoom,
     draw_reflection: wgpu::RenderPipeline,
 }
 
@@ -54,8 +54,7 @@ impl Lesson for WindingFix {
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
         let draw_reflection = reflection_recipe(knobs.get("winding-fix"));
         Ok(Self {
-            draw_room: scene.pipeline(&gpu.device, &states::OPAQUE),
-            mark_mirror: scene.pipeline(&gpu.device, &states::MARK_MIRROR),
+            marked_room: MarkedRoom::new(gpu, scene),
             draw_reflection: scene.pipeline(&gpu.device, &draw_reflection),
         })
     }
@@ -63,22 +62,12 @@ impl Lesson for WindingFix {
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1. Clear colour, depth (to 1.0) and stencil (to 0).
-        let mut pass = frame.pass("winding fix", Start::Cleared);
-
-        // 2. Draw the room as usual, all but the mirror.
-        pass.set_pipeline(&self.draw_room);
-        scene.draw_room(&mut pass);
-
-        // 3. Mark the mirror's visible pixels with 1 (lesson 3).
-        pass.set_pipeline(&self.mark_mirror);
-        pass.set_stencil_reference(1);
-        scene.mirror.draw(&mut pass);
+        // 1-3. Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
+        let mut pass = self.marked_room.begin(frame, "winding fix");
 
         // 4. Draw the reflected skull where the stencil is 1 (lesson 4), now with CULL_CLOCKWISE:
         //    the triangles the reflection turned clockwise are the ones facing the camera.
         pass.set_pipeline(&self.draw_reflection);
-        pass.set_stencil_reference(1);
         scene.bind_reflected_frame(&mut pass);
         scene.skull.draw_reflected(&mut pass);
     }

@@ -3,12 +3,12 @@
 //! A real mirror is glass: its own colour over what it reflects. The mirror is drawn last, blended
 //! over the reflection with its material's alpha a: C = a·Cmirror + (1 − a)·Creflection.
 
+use workbook::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, Start, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, knobs, states};
 
 pub struct TransparentMirror {
-    draw_room: wgpu::RenderPipeline,
-    mark_mirror: wgpu::RenderPipeline,
+    marked_room: MarkedRoom,
     draw_reflection: wgpu::RenderPipeline,
     draw_mirror: wgpu::RenderPipeline,
 }
@@ -48,8 +48,7 @@ impl Lesson for TransparentMirror {
         };
         // ANCHOR_END: recipes
         Ok(Self {
-            draw_room: scene.pipeline(&gpu.device, &states::OPAQUE),
-            mark_mirror: scene.pipeline(&gpu.device, &states::MARK_MIRROR),
+            marked_room: MarkedRoom::new(gpu, scene),
             draw_reflection: scene.pipeline(&gpu.device, &states::CULL_CLOCKWISE),
             draw_mirror: scene.pipeline(&gpu.device, &draw_mirror),
         })
@@ -58,17 +57,8 @@ impl Lesson for TransparentMirror {
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1. Clear colour, depth (to 1.0) and stencil (to 0).
-        let mut pass = frame.pass("transparent mirror", Start::Cleared);
-
-        // 2. Draw the room as usual, all but the mirror.
-        pass.set_pipeline(&self.draw_room);
-        scene.draw_room(&mut pass);
-
-        // 3. Mark the mirror's visible pixels with 1 (lesson 3).
-        pass.set_pipeline(&self.mark_mirror);
-        pass.set_stencil_reference(1);
-        scene.mirror.draw(&mut pass);
+        // 1-3. Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
+        let mut pass = self.marked_room.begin(frame, "transparent mirror");
 
         // 4. Draw the reflected skull where the stencil is 1, right side out (lessons 4 and 5).
         pass.set_pipeline(&self.draw_reflection);

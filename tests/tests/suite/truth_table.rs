@@ -255,22 +255,16 @@ impl Findings {
 }
 
 fn target(gpu: &Gpu) -> wgpu::Texture {
-    gpu.device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("truth table target"),
-        size: wgpu::Extent3d {
-            width: WIDTH,
-            height: HEIGHT,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: DEPTH_STENCIL_FORMAT,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-            | wgpu::TextureUsages::COPY_SRC
-            | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    })
+    // Written by the initial copy, read back after the draws.
+    let usage = wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST;
+    let size = (WIDTH, HEIGHT);
+    workbook::gpu::target_texture(
+        &gpu.device,
+        "truth table target",
+        DEPTH_STENCIL_FORMAT,
+        size,
+        usage,
+    )
 }
 
 /// Writes the stored values: column x of every row holds `x % 256`. (A copy into a depth-stencil
