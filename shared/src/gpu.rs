@@ -161,6 +161,8 @@ pub struct DepthStencil {
     pub view: wgpu::TextureView,
     /// The depth aspect alone, for shaders that read the depth buffer (`view=depth`).
     pub depth_only: wgpu::TextureView,
+    /// Where `view=stencil` rebuilds the stencil values as colours (see `views`).
+    pub stencil_values: wgpu::TextureView,
 }
 
 /// A 2-D render target: one mip level, one sample, rendered to and `usage` besides.
@@ -208,10 +210,22 @@ impl DepthStencil {
             aspect: wgpu::TextureAspect::DepthOnly,
             ..Default::default()
         });
+        let stencil_values = target_texture(
+            device,
+            "stencil values",
+            crate::views::STENCIL_VALUES_FORMAT,
+            size,
+            wgpu::TextureUsages::TEXTURE_BINDING,
+        )
+        .create_view(&wgpu::TextureViewDescriptor {
+            label: Some("stencil values view"),
+            ..Default::default()
+        });
         Self {
             texture,
             view,
             depth_only,
+            stencil_values,
         }
     }
 

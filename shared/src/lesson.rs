@@ -97,8 +97,8 @@ impl Frame<'_> {
 
     /// Replaces the colours with the stencil buffer in false colour (see `views::stencil_colour`).
     pub fn show_stencil(&mut self) {
-        let stencil_view = &self.scene.stencil_view;
-        stencil_view.show(&mut self.encoder, self.color, &self.depth_stencil.view);
+        let (device, stencil_view) = (&self.gpu.device, &self.scene.stencil_view);
+        stencil_view.show(device, &mut self.encoder, self.color, self.depth_stencil);
     }
 
     /// Replaces the colours with the depth buffer: raw values on the left, linearised on the right.

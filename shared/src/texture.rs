@@ -69,6 +69,8 @@ pub fn upload(
 /// The image and each half-size level below it, down to 1×1. Each texel of a level averages 2×2
 /// texels of the one above in linear light (averaging sRGB numbers would darken the distance).
 fn mip_chain(image: &RgbaImage) -> Vec<RgbaImage> {
+    // Decoding is the inner loop: 256 values, so look them up.
+    let decode: [f32; 256] = std::array::from_fn(|v| srgb_to_linear(v as u8));
     let mut levels = vec![image.clone()];
     while let Some(above) = levels.last().filter(|l| l.width() > 1 || l.height() > 1) {
         let (w, h) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
@@ -79,7 +81,7 @@ fn mip_chain(image: &RgbaImage) -> Vec<RgbaImage> {
                 let sy = (2 * y + dy).min(above.height() - 1);
                 let p = above.get_pixel(sx, sy).0;
                 for c in 0..3 {
-                    sum[c] += srgb_to_linear(p[c]);
+                    sum[c] += decode[p[c] as usize];
                 }
                 sum[3] += p[3] as f32 / 255.0;
             }

@@ -189,10 +189,16 @@ pub fn stencil_colour(value: u8) -> [u8; 3] {
 }
 // ANCHOR_END: palette
 
-/// The pipeline of `view=stencil`; built once with the scene.
+/// The format the stencil values are rebuilt in for `view=stencil`: value / 255 in one byte.
+pub const STENCIL_VALUES_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R8Unorm;
+
+/// The pipelines of `view=stencil`; built once with the scene.
 pub struct StencilViewPipeline {
-    pipeline: wgpu::RenderPipeline,
-    bind_group: wgpu::BindGroup,
+    /// One per bit i: passes where bit i of the stored value is set (read mask and reference 1 << i).
+    bits: Vec<wgpu::RenderPipeline>,
+    palette_pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    palette: wgpu::Buffer,
 }
 
 impl StencilViewPipeline {
@@ -208,83 +214,134 @@ impl StencilViewPipeline {
             contents: bytemuck::cast_slice(&colours),
             usage: wgpu::BufferUsages::UNIFORM,
         });
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("stencil view bind group layout"),
-            entries: &[crate::scene::uniform_entry(0)],
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("stencil view bind group"),
-            layout: &layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: palette.as_entire_binding(),
-            }],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("stencil view pipeline layout"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("stencil_view.wgsl"),
             source: wgpu::ShaderSource::Wgsl(include_str!("shaders/stencil_view.wgsl").into()),
         });
-        // Passes where the stored value equals the reference; reads the stencil, writes nothing.
-        let equal = wgpu::StencilFaceState {
-            compare: wgpu::CompareFunction::Equal,
-            fail_op: wgpu::StencilOperation::Keep,
-            depth_fail_op: wgpu::StencilOperation::Keep,
-            pass_op: wgpu::StencilOperation::Keep,
+        let bits_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("stencil bits pipeline layout"),
+            bind_group_layouts: &[],
+            immediate_size: 0,
+        });
+        // Adds the fragment's value to what is there: the bits sum up to the stored value.
+        let add = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::One,
+            operation: wgpu::BlendOperation::Add,
         };
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("SHOW_STENCIL"),
-            layout: Some(&pipeline_layout),
+        let bits = (0..8)
+            .map(|bit| {
+                let equal = wgpu::StencilFaceState {
+                    compare: wgpu::CompareFunction::Equal,
+                    fail_op: wgpu::StencilOperation::Keep,
+                    depth_fail_op: wgpu::StencilOperation::Keep,
+                    pass_op: wgpu::StencilOperation::Keep,
+                };
+                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                    label: Some(&format!("STENCIL_BIT_{bit}")),
+                    layout: Some(&bits_layout),
+                    vertex: wgpu::VertexState {
+                        module: &shader,
+                        entry_point: Some("vs_bit"),
+                        compilation_options: Default::default(),
+                        buffers: &[],
+                    },
+                    fragment: Some(wgpu::FragmentState {
+                        module: &shader,
+                        entry_point: Some("fs_bit"),
+                        compilation_options: Default::default(),
+                        targets: &[Some(wgpu::ColorTargetState {
+                            format: STENCIL_VALUES_FORMAT,
+                            blend: Some(wgpu::BlendState {
+                                color: add,
+                                alpha: add,
+                            }),
+                            write_mask: wgpu::ColorWrites::RED,
+                        })],
+                    }),
+                    primitive: wgpu::PrimitiveState::default(),
+                    depth_stencil: Some(wgpu::DepthStencilState {
+                        format: crate::gpu::DEPTH_STENCIL_FORMAT,
+                        depth_write_enabled: Some(false),
+                        depth_compare: Some(wgpu::CompareFunction::Always),
+                        stencil: wgpu::StencilState {
+                            front: equal,
+                            back: equal,
+                            read_mask: 1 << bit,
+                            write_mask: 0,
+                        },
+                        bias: wgpu::DepthBiasState::default(),
+                    }),
+                    multisample: wgpu::MultisampleState::default(),
+                    multiview_mask: None,
+                    cache: None,
+                })
+            })
+            .collect();
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("stencil palette bind group layout"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                crate::scene::uniform_entry(1),
+            ],
+        });
+        let palette_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("stencil palette pipeline layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let palette_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("STENCIL_PALETTE"),
+            layout: Some(&palette_layout),
             vertex: wgpu::VertexState {
                 module: &shader,
-                entry_point: Some("vs_value"),
+                entry_point: Some("vs_fullscreen"),
                 compilation_options: Default::default(),
                 buffers: &[],
             },
             fragment: Some(wgpu::FragmentState {
                 module: &shader,
-                entry_point: Some("fs_value"),
+                entry_point: Some("fs_palette"),
                 compilation_options: Default::default(),
                 targets: &[Some(color_format.into())],
             }),
             primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: crate::gpu::DEPTH_STENCIL_FORMAT,
-                depth_write_enabled: Some(false),
-                depth_compare: Some(wgpu::CompareFunction::Always),
-                stencil: wgpu::StencilState {
-                    front: equal,
-                    back: equal,
-                    read_mask: 0xff,
-                    write_mask: 0,
-                },
-                bias: wgpu::DepthBiasState::default(),
-            }),
+            depth_stencil: None,
             multisample: wgpu::MultisampleState::default(),
             multiview_mask: None,
             cache: None,
         });
         Self {
-            pipeline,
-            bind_group,
+            bits,
+            palette_pipeline,
+            layout,
+            palette,
         }
     }
 
+    // ANCHOR: show_stencil
     /// Paints every pixel of `color` with the false colour of its stencil value.
     pub fn show(
         &self,
+        device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
         color: &wgpu::TextureView,
-        depth_stencil: &wgpu::TextureView,
+        target: &DepthStencil,
     ) {
+        // 1. Rebuild the values bit by bit: draw i passes where (1 << i) & stored == 1 << i.
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("show stencil"),
+            label: Some("stencil bits"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: color,
+                view: &target.stencil_values,
                 depth_slice: None,
                 resolve_target: None,
                 ops: wgpu::Operations {
@@ -293,7 +350,7 @@ impl StencilViewPipeline {
                 },
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: depth_stencil,
+                view: &target.view,
                 depth_ops: Some(wgpu::Operations {
                     load: wgpu::LoadOp::Load,
                     store: wgpu::StoreOp::Store,
@@ -307,11 +364,47 @@ impl StencilViewPipeline {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_pipeline(&self.pipeline);
-        pass.set_bind_group(0, &self.bind_group, &[]);
-        for value in 0..=255u32 {
-            pass.set_stencil_reference(value);
-            pass.draw(0..3, value..value + 1);
+        for (bit, pipeline) in self.bits.iter().enumerate() {
+            pass.set_pipeline(pipeline);
+            pass.set_stencil_reference(1 << bit);
+            pass.draw(0..3, bit as u32..bit as u32 + 1);
         }
+        drop(pass);
+        // ANCHOR_END: show_stencil
+
+        // 2. Look each value up in the palette.
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("stencil palette bind group"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&target.stencil_values),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: self.palette.as_entire_binding(),
+                },
+            ],
+        });
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("stencil palette"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: color,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&self.palette_pipeline);
+        pass.set_bind_group(0, &bind_group, &[]);
+        pass.draw(0..3, 0..1);
     }
 }

@@ -84,7 +84,7 @@ fn without_the_depth_test_the_mark_runs_under_the_crate() {
     assert!(under_crate > 300);
 }
 
-/// `view=stencil` (drawn with one Equal-test pass per value, no copy) paints each pixel with the
+/// `view=stencil` (rebuilt bit by bit with the stencil test, no copy) paints each pixel with the
 /// colour of the value the readback (a copy) finds there: two independent paths agree.
 #[test]
 fn the_stencil_view_shows_the_values_the_readback_finds() {
