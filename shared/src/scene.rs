@@ -211,6 +211,11 @@ impl Drawable {
         self.centre
     }
 
+    /// Where the object's mirror image stands: its centre reflected in the mirror's plane.
+    pub fn reflected_centre(&self) -> Vec3 {
+        mirror_reflection().transform_point3(self.centre)
+    }
+
     /// Changes the material's alpha (for the object and its mirror image).
     pub fn set_alpha(&self, queue: &wgpu::Queue, alpha: f32) {
         for (buffer, uniform) in &self.uniforms {

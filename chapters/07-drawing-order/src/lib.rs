@@ -4,6 +4,7 @@
 //! mirror, and everything seen in it. Transparent objects write depth, so what is drawn before what
 //! decides the picture. The order that works draws the mirror's world first (MKXJun's five steps).
 
+use workbook::glam::Vec3;
 use workbook::wgpu;
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, Start, scene::Drawable, states};
 
@@ -48,7 +49,13 @@ impl Lesson for DrawingOrder {
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
         let opaque = [&scene.floor, &scene.wall, &scene.crate_box, &scene.skull];
-        let transparent = back_to_front(frame, [&scene.fence_box, &scene.water]);
+        let transparent = [&scene.fence_box, &scene.water];
+        // The mirror's world: what stands in front of the mirror. (The wall is behind its plane.)
+        let mirrored = MirrorWorld {
+            opaque: [&scene.floor, &scene.crate_box, &scene.skull],
+            transparent: farthest_first(frame, transparent, Drawable::reflected_centre),
+        };
+        let transparent = farthest_first(frame, transparent, Drawable::centre);
         let mut pass = frame.pass("drawing order", Start::Cleared);
 
         if self.mirror_first {
@@ -56,7 +63,7 @@ impl Lesson for DrawingOrder {
             self.mark_mirror(&mut pass, scene);
             // 2. The mirror's world, opaque objects first, where the stencil is 1.
             // 3. Then its transparent objects, then the transparent mirror over all of it.
-            self.draw_reflected_world(&mut pass, scene, &opaque, &transparent);
+            self.draw_reflected_world(&mut pass, scene, &mirrored);
             // 4. The room's opaque objects: the depth test puts the crate and the skull in front
             //    of the mirror's world, where they belong.
             self.draw_opaque(&mut pass, scene, &opaque);
@@ -69,7 +76,7 @@ impl Lesson for DrawingOrder {
             // ... then the mirror: its mark fails wherever a transparent object wrote a nearer
             // depth, and there the mirror's world is never drawn.
             self.mark_mirror(&mut pass, scene);
-            self.draw_reflected_world(&mut pass, scene, &opaque, &transparent);
+            self.draw_reflected_world(&mut pass, scene, &mirrored);
         }
     }
     // ANCHOR_END: render
@@ -90,16 +97,15 @@ impl DrawingOrder {
         &self,
         pass: &mut wgpu::RenderPass<'_>,
         scene: &Scene,
-        opaque: &[&Drawable],
-        transparent: &[&Drawable],
+        world: &MirrorWorld<'_>,
     ) {
         scene.bind_reflected_frame(pass);
         pass.set_pipeline(&self.draw_reflection);
-        for object in opaque {
+        for object in world.opaque {
             object.draw_reflected(pass);
         }
         pass.set_pipeline(&self.draw_reflected_transparent);
-        for object in transparent {
+        for object in world.transparent {
             object.draw_reflected(pass);
         }
         scene.bind_frame(pass);
@@ -124,17 +130,25 @@ impl DrawingOrder {
 }
 // ANCHOR_END: steps
 
+/// The objects the mirror shows, to be drawn reflected.
+struct MirrorWorld<'a> {
+    opaque: [&'a Drawable; 3],
+    /// Farthest first, by where their mirror images stand.
+    transparent: [&'a Drawable; 2],
+}
+
 /// Transparent objects sorted farthest from the camera first, so each is blended over what lies
-/// behind it.
-fn back_to_front<'a, const N: usize>(
+/// behind it; `position` says where an object stands (itself, or its mirror image).
+fn farthest_first<'a, const N: usize>(
     frame: &Frame<'_>,
     mut objects: [&'a Drawable; N],
+    position: fn(&Drawable) -> Vec3,
 ) -> [&'a Drawable; N] {
     let eye = frame.camera.eye();
     objects.sort_by(|a, b| {
-        b.centre()
+        position(b)
             .distance(eye)
-            .total_cmp(&a.centre().distance(eye))
+            .total_cmp(&position(a).distance(eye))
     });
     objects
 }
