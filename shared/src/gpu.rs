@@ -125,6 +125,44 @@ impl Gpu {
         result
     }
 
+    /// The device for headless work, one per process and backend choice, shared by every headless
+    /// render in it. A test run renders hundreds of frames in one process, and a driver may refuse
+    /// new devices after a few dozen: NVIDIA's did on an H200 (measured: "no adapter" after 18
+    /// tests in a row, a crash with 4 threads). Creating one also costs about 30 ms.
+    pub fn shared_headless(backend: Option<&str>, verbose: bool) -> Result<Arc<Gpu>> {
+        type Shared = Vec<(Option<String>, Arc<Gpu>)>;
+        static SHARED: Mutex<Shared> = Mutex::new(Vec::new());
+        let mut shared = SHARED.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, gpu)) = shared.iter().find(|(b, _)| b.as_deref() == backend) {
+            return Ok(gpu.clone());
+        }
+        let gpu = Arc::new(Self::headless(backend, verbose)?);
+        shared.push((backend.map(str::to_string), gpu.clone()));
+        Ok(gpu)
+    }
+
+    /// Runs `work` and fails with the first wgpu error it caused. Error scopes are thread-local,
+    /// so renders on other threads that share the device keep their errors to themselves.
+    pub fn scoped<T>(&self, work: impl FnOnce() -> Result<T>) -> Result<T> {
+        let scopes = [
+            wgpu::ErrorFilter::Validation,
+            wgpu::ErrorFilter::OutOfMemory,
+            wgpu::ErrorFilter::Internal,
+        ]
+        .map(|filter| self.device.push_error_scope(filter));
+        let result = work();
+        let mut first = None;
+        for scope in scopes.into_iter().rev() {
+            if let Some(error) = pollster::block_on(scope.pop()) {
+                first.get_or_insert(error);
+            }
+        }
+        match first {
+            Some(error) => bail!("wgpu reported an error: {}", one_line(&error.to_string())),
+            None => result,
+        }
+    }
+
     /// Fails with the first wgpu error reported so far (validation errors above all), if any.
     pub fn check_errors(&self) -> Result<()> {
         let errors = std::mem::take(&mut *self.errors.lock().unwrap_or_else(|e| e.into_inner()));

@@ -86,7 +86,7 @@ pub struct Headless<L: Lesson> {
 
 impl<L: Lesson> Headless<L> {
     pub fn new(request: &Request) -> Result<Self> {
-        let gpu = Gpu::headless(request.backend.as_deref(), request.verbose)?;
+        let gpu = Gpu::shared_headless(request.backend.as_deref(), request.verbose)?;
         check_size(&gpu, request.width, request.height)?;
         if (request.read_stencil || request.read_depth) && !gpu.can_copy_depth_stencil() {
             bail!(
@@ -95,36 +95,38 @@ impl<L: Lesson> Headless<L> {
             );
         }
         let size = (request.width, request.height);
-        let runner = Runner::<L>::new(
-            gpu,
-            HEADLESS_FORMAT,
-            &request.scene,
-            request.knobs.clone(),
-            request.camera,
-            size,
-        )?;
-        let color = target(
-            &runner.gpu.device,
-            "headless colour target",
-            HEADLESS_FORMAT,
-            size,
-        );
-        Ok(Self {
-            runner,
-            color,
-            read_stencil: request.read_stencil,
-            read_depth: request.read_depth,
+        gpu.clone().scoped(|| {
+            let runner = Runner::<L>::new(
+                gpu,
+                HEADLESS_FORMAT,
+                &request.scene,
+                request.knobs.clone(),
+                request.camera,
+                size,
+            )?;
+            let device = &runner.gpu.device;
+            let color = target(device, "headless colour target", HEADLESS_FORMAT, size);
+            Ok(Self {
+                runner,
+                color,
+                read_stencil: request.read_stencil,
+                read_depth: request.read_depth,
+            })
         })
     }
 
     /// Rebuilds the lesson for other knob values.
     pub fn set_knobs(&mut self, knobs: Knobs) -> Result<()> {
-        self.runner.set_knobs(knobs)?;
-        self.runner.gpu.check_errors()
+        let gpu = self.runner.gpu.clone();
+        gpu.scoped(|| self.runner.set_knobs(knobs))
     }
 
     /// Renders a frame and reads back what the request asked for.
     pub fn capture(&self) -> Result<Capture> {
+        self.runner.gpu.scoped(|| self.capture_unscoped())
+    }
+
+    fn capture_unscoped(&self) -> Result<Capture> {
         let (runner, size) = (&self.runner, (self.color.width(), self.color.height()));
         let device = &runner.gpu.device;
         let color_view = self.color.create_view(&Default::default());
@@ -148,7 +150,6 @@ impl<L: Lesson> Headless<L> {
             .map(|readback| readback.read(device))
             .collect::<Result<Vec<_>>>()?
             .into_iter();
-        runner.gpu.check_errors()?;
 
         let mut color = RgbaImage::from_raw(size.0, size.1, bytes.next().unwrap())
             .context("colour readback has the wrong size")?;
@@ -194,6 +195,15 @@ pub fn read_texture(
     aspect: wgpu::TextureAspect,
     bytes_per_texel: u32,
 ) -> Result<Vec<u8>> {
+    gpu.scoped(|| read_texture_unscoped(gpu, texture, aspect, bytes_per_texel))
+}
+
+fn read_texture_unscoped(
+    gpu: &Gpu,
+    texture: &wgpu::Texture,
+    aspect: wgpu::TextureAspect,
+    bytes_per_texel: u32,
+) -> Result<Vec<u8>> {
     let mut encoder = gpu
         .device
         .create_command_encoder(&wgpu::CommandEncoderDescriptor {
@@ -201,9 +211,7 @@ pub fn read_texture(
         });
     let readback = Readback::new(&gpu.device, &mut encoder, texture, aspect, bytes_per_texel);
     gpu.queue.submit([encoder.finish()]);
-    let bytes = readback.read(&gpu.device)?;
-    gpu.check_errors()?;
-    Ok(bytes)
+    readback.read(&gpu.device)
 }
 
 /// A texture copied into a mappable buffer, rows padded to 256 bytes as wgpu requires.

@@ -1,6 +1,8 @@
 //! What the window and the headless runner share: a lesson with its room, knobs, camera and
 //! depth-stencil buffer, rendering into whatever colour view it is handed.
 
+use std::sync::Arc;
+
 use anyhow::Result;
 
 use crate::camera::Camera;
@@ -11,7 +13,7 @@ use crate::scene::{Scene, SceneOptions};
 use crate::views::DepthViewPipelines;
 
 pub struct Runner<L: Lesson> {
-    pub gpu: Gpu,
+    pub gpu: Arc<Gpu>,
     pub scene: Scene,
     pub lesson: L,
     pub knobs: Knobs,
@@ -22,7 +24,7 @@ pub struct Runner<L: Lesson> {
 
 impl<L: Lesson> Runner<L> {
     pub fn new(
-        gpu: Gpu,
+        gpu: Arc<Gpu>,
         color_format: wgpu::TextureFormat,
         scene: &SceneOptions,
         knobs: Knobs,

@@ -96,7 +96,7 @@ impl<L: Lesson> App<'_, L> {
         surface.configure(&gpu.device, &config);
         let knobs = self.knobs.take().context("the window was opened twice")?;
         let runner = Runner::new(
-            gpu,
+            std::sync::Arc::new(gpu),
             config.format,
             &self.args.scene(),
             knobs,

@@ -17,14 +17,17 @@ use crate::flip::{self, Threshold};
 /// to see a fringe.
 pub const SIZE: (u32, u32) = (800, 450);
 
-/// lavapipe renders each of these bit-identically from run to run, so on the machine that made the
-/// references the error is 0. Another driver (a real GPU) may round colours by 1/255 and place a few
-/// edge pixels differently; that moves the mean by well under 0.01 and touches far fewer than 0.1% of
-/// the pixels visibly. A change a reader would notice (a 30×30 patch, a missing object) exceeds one
-/// of the two.
+/// The references were made with lavapipe, which renders each of these bit-identically run to run:
+/// on the machine that made them the error is 0. An NVIDIA H200 (Vulkan, driver 580) filters the
+/// textures a little differently (anisotropic filtering is the driver's own): measured against the
+/// references, FLIP mean 0.017-0.018 with 0.000-0.056% of the pixels visibly different. The mean
+/// limit sits above that. What a reader would notice shows in the share of visibly different pixels:
+/// the smallest wrong picture of the book (drawing-order's dark fringe) differs from its right one
+/// in 0.33% of the pixels, a 30×30 patch in 0.25%; the limit, 0.15%, lies between those and the
+/// other driver's 0.056%.
 pub const STRICT: Threshold = Threshold {
-    mean: 0.01,
-    visible_share: 0.001,
+    mean: 0.03,
+    visible_share: 0.0015,
 };
 
 /// One screenshot of the book.

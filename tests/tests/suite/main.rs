@@ -14,4 +14,5 @@ mod screenshots;
 mod stencil_basics;
 mod transparent_mirror;
 mod truth_table;
+mod validation;
 mod winding_fix;

@@ -398,17 +398,20 @@ fn draw_cases(gpu: &Gpu, texture: &wgpu::Texture) -> usize {
 
 #[test]
 fn every_stencil_case_matches_the_cpu_model() -> anyhow::Result<()> {
-    let gpu = Gpu::headless(None, false)?;
+    let gpu = Gpu::shared_headless(None, false)?;
     assert!(
         gpu.can_copy_depth_stencil(),
         "the truth table reads the stencil buffer back, which this backend ({:?}) cannot do; use Vulkan",
         gpu.adapter.get_info().backend
     );
-    let texture = target(&gpu);
-    write_stored_values(&gpu, &texture);
-    let pipelines = draw_cases(&gpu, &texture);
+    // Any wgpu error while setting up and drawing fails the test.
+    let (texture, pipelines) = gpu.scoped(|| {
+        let texture = target(&gpu);
+        write_stored_values(&gpu, &texture);
+        let pipelines = draw_cases(&gpu, &texture);
+        Ok((texture, pipelines))
+    })?;
     let stencil = read_texture(&gpu, &texture, wgpu::TextureAspect::StencilOnly, 1)?;
-    gpu.check_errors()?;
     assert_eq!(pipelines, COMPARISONS.len() * HALF * MASKS.len());
     assert_eq!(stencil.len(), (WIDTH * HEIGHT) as usize);
 
