@@ -253,6 +253,38 @@ mod tests {
     }
 
     #[test]
+    fn an_obj_without_normals_gets_outward_normals_and_is_placed() {
+        // A tetrahedron far from the origin, 10 units across, faces counter-clockwise from outside.
+        let obj = "v 100 100 100\nv 110 100 100\nv 100 110 100\nv 100 100 110\n\
+                   f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+        let path = std::env::temp_dir().join(format!("tetra-{}.obj", std::process::id()));
+        std::fs::write(&path, obj).unwrap();
+        let mesh = MeshData::load_obj(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(mesh.triangle_count(), 4);
+        let (min, max) = mesh.bounds();
+        assert!(
+            ((max - min).max_element() - 1.0).abs() < 1e-6,
+            "scaled to a unit box"
+        );
+        assert!((min + max).length() < 1e-5, "centred on the origin");
+        let centre = mesh
+            .vertices
+            .iter()
+            .map(|v| Vec3::from(v.position))
+            .sum::<Vec3>()
+            / 4.0;
+        for vertex in &mesh.vertices {
+            let normal = Vec3::from(vertex.normal);
+            assert!((normal.length() - 1.0).abs() < 1e-5);
+            assert!(
+                normal.dot(Vec3::from(vertex.position) - centre) > 0.0,
+                "normal points out"
+            );
+        }
+    }
+
+    #[test]
     fn fit_centres_and_scales() {
         let mut mesh = MeshData::cuboid(Vec3::new(10.0, 20.0, 40.0));
         for v in &mut mesh.vertices {
