@@ -116,7 +116,7 @@ impl DepthViewPipelines {
         color: &wgpu::TextureView,
         bind_group: &wgpu::BindGroup,
     ) {
-        self.fullscreen(encoder, "show depth", &self.show, color, bind_group);
+        fullscreen_pass(encoder, "show depth", &self.show, color, bind_group);
     }
 
     /// Copies the depth buffer into `target`, an R32Float texture of the same size.
@@ -126,37 +126,37 @@ impl DepthViewPipelines {
         target: &wgpu::TextureView,
         bind_group: &wgpu::BindGroup,
     ) {
-        self.fullscreen(encoder, "copy depth", &self.copy, target, bind_group);
+        fullscreen_pass(encoder, "copy depth", &self.copy, target, bind_group);
     }
+}
 
-    fn fullscreen(
-        &self,
-        encoder: &mut wgpu::CommandEncoder,
-        label: &str,
-        pipeline: &wgpu::RenderPipeline,
-        target: &wgpu::TextureView,
-        bind_group: &wgpu::BindGroup,
-    ) {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some(label),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(pipeline);
-        pass.set_bind_group(0, bind_group, &[]);
-        pass.draw(0..3, 0..1);
-    }
+/// One full-screen triangle into `target` (cleared to black first), with `pipeline` and `bind_group`.
+fn fullscreen_pass(
+    encoder: &mut wgpu::CommandEncoder,
+    label: &str,
+    pipeline: &wgpu::RenderPipeline,
+    target: &wgpu::TextureView,
+    bind_group: &wgpu::BindGroup,
+) {
+    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: target,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations {
+                load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                store: wgpu::StoreOp::Store,
+            },
+        })],
+        depth_stencil_attachment: None,
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    });
+    pass.set_pipeline(pipeline);
+    pass.set_bind_group(0, bind_group, &[]);
+    pass.draw(0..3, 0..1);
 }
 
 // ANCHOR: palette
@@ -387,24 +387,7 @@ impl StencilViewPipeline {
                 },
             ],
         });
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("stencil palette"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: color,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(&self.palette_pipeline);
-        pass.set_bind_group(0, &bind_group, &[]);
-        pass.draw(0..3, 0..1);
+        let palette = &self.palette_pipeline;
+        fullscreen_pass(encoder, "stencil palette", palette, color, &bind_group);
     }
 }
