@@ -379,13 +379,8 @@ impl Scene {
                 });
                 (group, (buffer, uniform))
             };
-            // ANCHOR: reflected_world
-            // The mirror image of an object: first its own world matrix, then the reflection.
-            // (Column vectors: R * world. DirectXMath's row vectors write it world * R.)
-            let reflected_world = mirror_reflection() * world;
-            // ANCHOR_END: reflected_world
             let (bind_group, normal) = make(name.to_string(), world);
-            let (reflected, mirrored) = make(format!("reflected {name}"), reflected_world);
+            let (reflected, mirrored) = make(format!("reflected {name}"), reflected_world(world));
             let (min, max) = mesh.bounds();
             Drawable {
                 name,
@@ -568,6 +563,14 @@ pub fn mirror_plane() -> Plane {
 pub fn mirror_reflection() -> Mat4 {
     reflection(mirror_plane())
 }
+
+// ANCHOR: reflected_world
+/// The world matrix of an object's mirror image: first its own world matrix, then the reflection.
+/// (Column vectors: R * world. DirectXMath's row vectors write it world * R.)
+pub fn reflected_world(world: Mat4) -> Mat4 {
+    mirror_reflection() * world
+}
+// ANCHOR_END: reflected_world
 
 // ANCHOR: reflected_lights
 /// The lights as the mirror world sees them: each direction reflected too. Without this the mirror

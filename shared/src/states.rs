@@ -136,7 +136,9 @@ pub const TRANSPARENT: Recipe = Recipe {
     blend: Some(BlendState::ALPHA_BLENDING),
     ..OPAQUE
 };
+// ANCHOR_END: transparent
 
+// ANCHOR: transparent_no_cull
 /// TRANSPARENT seen from both sides, for the wire-fence crate (whose far side shows through its
 /// holes) and the water. (Luna and MKXJun: `NoCullRS` with `TransparentBS`.)
 pub const TRANSPARENT_NO_CULL: Recipe = Recipe {
@@ -152,7 +154,7 @@ pub const REFLECTED_TRANSPARENT: Recipe = Recipe {
     stencil: DRAW_REFLECTION.stencil,
     ..TRANSPARENT_NO_CULL
 };
-// ANCHOR_END: transparent
+// ANCHOR_END: transparent_no_cull
 
 impl Recipe {
     /// The `DepthStencilState` of this recipe for the workbook's depth-stencil format.

@@ -43,22 +43,26 @@ pub const KNOBS: &[Knob] = &[
 ];
 // ANCHOR_END: knobs
 
+// ANCHOR: recipe
+/// DRAW_ROOM: the OPAQUE recipe with the depth test the knobs choose.
+pub fn draw_room(knobs: &Knobs) -> Recipe {
+    Recipe {
+        name: "DRAW_ROOM",
+        depth_compare: states::compare_function(knobs.get("depth")),
+        depth_write: knobs.is_on("depth-write"),
+        ..states::OPAQUE
+    }
+}
+// ANCHOR_END: recipe
+
 impl Lesson for DepthTest {
     const NAME: &'static str = "depth-test";
     const TITLE: &'static str = "Lesson 1: the depth test";
     const KNOBS: &'static [Knob] = KNOBS;
 
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
-        // ANCHOR: recipe
-        let draw_room = Recipe {
-            name: "DRAW_ROOM",
-            depth_compare: states::compare_function(knobs.get("depth")),
-            depth_write: knobs.is_on("depth-write"),
-            ..states::OPAQUE
-        };
-        // ANCHOR_END: recipe
         Ok(Self {
-            draw_room: scene.pipeline(&gpu.device, &draw_room),
+            draw_room: scene.pipeline(&gpu.device, &draw_room(knobs)),
             near_first: knobs.get("order") == "near-first",
             show_depth: knobs.get("view") == "depth",
         })

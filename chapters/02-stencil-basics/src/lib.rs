@@ -71,34 +71,38 @@ pub const KNOBS: &[Knob] = &[
 ];
 // ANCHOR_END: knobs
 
+// ANCHOR: recipe
+/// DRAW_THROUGH: the room drawn with the stencil test, masks and operations the knobs choose.
+pub fn draw_through(knobs: &Knobs) -> Recipe {
+    let face = wgpu::StencilFaceState {
+        compare: states::compare_function(knobs.get("compare")),
+        fail_op: stencil::operation(knobs.get("fail-op")),
+        depth_fail_op: stencil::operation(knobs.get("depth-fail-op")),
+        pass_op: stencil::operation(knobs.get("pass-op")),
+    };
+    Recipe {
+        name: "DRAW_THROUGH",
+        stencil: wgpu::StencilState {
+            front: face,
+            back: face,
+            read_mask: knobs::byte(knobs.get("read-mask")) as u32,
+            write_mask: knobs::byte(knobs.get("write-mask")) as u32,
+        },
+        ..states::OPAQUE
+    }
+}
+// ANCHOR_END: recipe
+
 impl Lesson for StencilBasics {
     const NAME: &'static str = "stencil-basics";
     const TITLE: &'static str = "Lesson 2: the stencil test";
     const KNOBS: &'static [Knob] = KNOBS;
 
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
-        // ANCHOR: recipe
-        let face = wgpu::StencilFaceState {
-            compare: states::compare_function(knobs.get("compare")),
-            fail_op: stencil::operation(knobs.get("fail-op")),
-            depth_fail_op: stencil::operation(knobs.get("depth-fail-op")),
-            pass_op: stencil::operation(knobs.get("pass-op")),
-        };
-        let draw_through = Recipe {
-            name: "DRAW_THROUGH",
-            stencil: wgpu::StencilState {
-                front: face,
-                back: face,
-                read_mask: knobs::byte(knobs.get("read-mask")) as u32,
-                write_mask: knobs::byte(knobs.get("write-mask")) as u32,
-            },
-            ..states::OPAQUE
-        };
-        // ANCHOR_END: recipe
         let device = &gpu.device;
         Ok(Self {
             mark_shape: shapes::pipeline(device, scene, &states::MARK_SHAPE),
-            draw_through: scene.pipeline(device, &draw_through),
+            draw_through: scene.pipeline(device, &draw_through(knobs)),
             porthole: Shape::disc(device, "porthole", Vec2::new(0.0, 0.0), 0.8),
             bullseye: Shape::disc(device, "bullseye", Vec2::new(0.0, 0.0), 0.35),
             reference: knobs::byte(knobs.get("reference")) as u32,

@@ -30,26 +30,30 @@ pub const KNOBS: &[Knob] = &[
 ];
 // ANCHOR_END: knobs
 
+// ANCHOR: recipes
+/// MARK_MIRROR, or with mark-depth-test=off the wrong way: a mark that ignores what stands in front
+/// of the mirror.
+pub fn mark_mirror(knobs: &Knobs) -> Recipe {
+    if knobs.is_on("mark-depth-test") {
+        states::MARK_MIRROR
+    } else {
+        Recipe {
+            depth_compare: wgpu::CompareFunction::Always,
+            ..states::MARK_MIRROR
+        }
+    }
+}
+// ANCHOR_END: recipes
+
 impl Lesson for MarkMirror {
     const NAME: &'static str = "mark-mirror";
     const TITLE: &'static str = "Lesson 3: marking the mirror";
     const KNOBS: &'static [Knob] = KNOBS;
 
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
-        // ANCHOR: recipes
-        let mark_mirror = if knobs.is_on("mark-depth-test") {
-            states::MARK_MIRROR
-        } else {
-            // The wrong way: the mark ignores what is in front of the mirror.
-            Recipe {
-                depth_compare: wgpu::CompareFunction::Always,
-                ..states::MARK_MIRROR
-            }
-        };
-        // ANCHOR_END: recipes
         Ok(Self {
             draw_room: scene.pipeline(&gpu.device, &states::OPAQUE),
-            mark_mirror: scene.pipeline(&gpu.device, &mark_mirror),
+            mark_mirror: scene.pipeline(&gpu.device, &mark_mirror(knobs)),
             show_stencil: knobs.get("view") == "stencil",
         })
     }

@@ -31,26 +31,30 @@ pub const KNOBS: &[Knob] = &[
 ];
 // ANCHOR_END: knobs
 
+// ANCHOR: recipes
+/// DRAW_REFLECTION, or with stencil=off the wrong way: the reflection drawn wherever its depth test
+/// passes.
+pub fn draw_reflection(knobs: &Knobs) -> Recipe {
+    if knobs.is_on("stencil") {
+        states::DRAW_REFLECTION
+    } else {
+        Recipe {
+            stencil: states::NO_STENCIL,
+            ..states::DRAW_REFLECTION
+        }
+    }
+}
+// ANCHOR_END: recipes
+
 impl Lesson for ReflectSkull {
     const NAME: &'static str = "reflect-skull";
     const TITLE: &'static str = "Lesson 4: the reflected skull";
     const KNOBS: &'static [Knob] = KNOBS;
 
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
-        // ANCHOR: recipes
-        let draw_reflection = if knobs.is_on("stencil") {
-            states::DRAW_REFLECTION
-        } else {
-            // The wrong way: the reflection is drawn wherever its depth test passes.
-            Recipe {
-                stencil: states::NO_STENCIL,
-                ..states::DRAW_REFLECTION
-            }
-        };
-        // ANCHOR_END: recipes
         Ok(Self {
             marked_room: MarkedRoom::new(gpu, scene),
-            draw_reflection: scene.pipeline(&gpu.device, &draw_reflection),
+            draw_reflection: scene.pipeline(&gpu.device, &draw_reflection(knobs)),
             reflect_lights: knobs.is_on("reflect-lights"),
         })
     }

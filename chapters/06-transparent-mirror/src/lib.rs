@@ -5,7 +5,7 @@
 
 use workbook::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states};
 
 pub struct TransparentMirror {
     marked_room: MarkedRoom,
@@ -30,27 +30,33 @@ pub const KNOBS: &[Knob] = &[
 ];
 // ANCHOR_END: knobs
 
+// ANCHOR: recipes
+/// TRANSPARENT for the glass, or with blend=off the wrong way: OPAQUE, the glass replacing whatever
+/// the mirror reflected.
+pub fn draw_mirror(knobs: &Knobs) -> Recipe {
+    if knobs.is_on("blend") {
+        states::TRANSPARENT
+    } else {
+        states::OPAQUE
+    }
+}
+// ANCHOR_END: recipes
+
 impl Lesson for TransparentMirror {
     const NAME: &'static str = "transparent-mirror";
     const TITLE: &'static str = "Lesson 6: the transparent mirror";
     const KNOBS: &'static [Knob] = KNOBS;
 
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
-        // ANCHOR: recipes
-        // The glass's alpha is part of its material, set here from the knob.
+        // ANCHOR: alpha
+        // The glass's alpha is part of its material: set it from the knob.
         let alpha: f32 = knobs.get("mirror-alpha").parse()?;
         scene.mirror.set_alpha(&gpu.queue, alpha);
-        let draw_mirror = if knobs.is_on("blend") {
-            states::TRANSPARENT
-        } else {
-            // The wrong way: the glass replaces whatever the mirror reflected.
-            states::OPAQUE
-        };
-        // ANCHOR_END: recipes
+        // ANCHOR_END: alpha
         Ok(Self {
             marked_room: MarkedRoom::new(gpu, scene),
             draw_reflection: scene.pipeline(&gpu.device, &states::CULL_CLOCKWISE),
-            draw_mirror: scene.pipeline(&gpu.device, &draw_mirror),
+            draw_mirror: scene.pipeline(&gpu.device, &draw_mirror(knobs)),
         })
     }
 
