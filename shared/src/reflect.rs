@@ -3,7 +3,7 @@
 //! glam uses column vectors: a point is transformed as `R * p`, and "first the world matrix, then the
 //! reflection" is `R * world`. DirectXMath uses row vectors and writes the same thing `world * R`.
 
-use glam::{Mat3, Mat4, Vec3, Vec4};
+use glam::{Mat3, Mat4, Vec3};
 
 /// A plane: the points p with `normal · p + d = 0`, the normal of unit length.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -34,11 +34,6 @@ impl Plane {
     /// How far `p` lies in front of the plane (negative: behind it).
     pub fn signed_distance(&self, p: Vec3) -> f32 {
         self.normal.dot(p) + self.d
-    }
-
-    /// The plane as the 4-vector (n, d), so that `plane · (p, 1)` is the signed distance.
-    pub fn as_vec4(&self) -> Vec4 {
-        self.normal.extend(self.d)
     }
 }
 

@@ -13,7 +13,7 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 use wgpu::util::DeviceExt;
 
 use crate::Gpu;
-use crate::camera::{self, Camera};
+use crate::camera::Camera;
 use crate::mesh::{GpuMesh, MeshData, Vertex};
 use crate::reflect::{Plane, normal_matrix, reflection};
 use crate::states::Recipe;
@@ -592,17 +592,6 @@ pub fn skull_world() -> Mat4 {
         * Mat4::from_scale(Vec3::splat(SKULL_SIZE))
 }
 
-/// The corners of the mirror, counter-clockwise seen from the room.
-pub fn mirror_corners() -> [Vec3; 4] {
-    let (a, b) = (MIRROR_MIN, MIRROR_MAX);
-    [
-        Vec3::new(a.x, a.y, 0.0),
-        Vec3::new(b.x, a.y, 0.0),
-        Vec3::new(b.x, b.y, 0.0),
-        Vec3::new(a.x, b.y, 0.0),
-    ]
-}
-
 /// The floor: one 4 m checker tile repeated.
 fn floor_mesh() -> MeshData {
     let mut mesh = MeshData::default();
@@ -667,9 +656,4 @@ pub(crate) fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
         },
         count: None,
     }
-}
-
-/// The projection's planes, for shaders that linearise depth.
-pub fn depth_planes() -> (f32, f32) {
-    (camera::NEAR, camera::FAR)
 }

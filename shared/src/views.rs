@@ -45,7 +45,7 @@ impl DepthViewPipelines {
                 crate::scene::uniform_entry(1),
             ],
         });
-        let (near, far) = crate::scene::depth_planes();
+        let (near, far) = (crate::camera::NEAR, crate::camera::FAR);
         let planes = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("depth view planes"),
             contents: bytemuck::cast_slice(&[near, far]),
