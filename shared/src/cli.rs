@@ -8,18 +8,20 @@ use anyhow::{Context, Result, bail};
 use clap::{CommandFactory, FromArgMatches, Parser};
 
 use crate::camera::Camera;
-use crate::headless::{self, Request};
+use crate::headless::{Headless, Request, Still};
 use crate::knobs::{self, Knobs};
 use crate::lesson::Lesson;
 use crate::scene::{SceneOptions, default_assets};
+use crate::steps::{self, Show, Stop};
 
 /// The largest width or height `--size` accepts before asking the GPU.
 pub const MAX_SIZE: u32 = 16384;
 
 #[derive(Debug, Parser)]
 #[command(
-    after_help = "Keys in the window: 1-9 cycle the knobs (Shift+digit goes back), drag to orbit, \
-                  wheel to zoom, C prints the camera pose, Esc quits."
+    after_help = "Keys in the window: 1-9 cycle the knobs (Shift+digit goes back), [ and ] step \
+                  back and forward through the frame, Tab cycles color/depth/stencil, drag to \
+                  orbit, wheel to zoom, C prints the camera pose, Esc quits."
 )]
 pub struct Args {
     /// Render one frame without a window and write it to this PNG file.
@@ -34,6 +36,19 @@ pub struct Args {
     /// List this lesson's knobs, their values and what they mean, then exit.
     #[arg(long)]
     pub list_knobs: bool,
+    /// List the numbered steps of the frame (with the knobs as set), then exit.
+    #[arg(long)]
+    pub list_steps: bool,
+    /// Stop the frame after step N (from 1; see --list-steps), or `last`: the whole frame.
+    #[arg(long, value_name = "N", default_value = "last", value_parser = Stop::parse)]
+    pub step: Stop,
+    /// Which buffer the window or screenshot shows [default: the lesson's own, mostly color].
+    #[arg(long, value_name = "BUFFER", value_enum)]
+    pub show: Option<Show>,
+    /// Write every step's colour, depth and stencil buffers into this folder as
+    /// NN-<step>-{color,depth,stencil}.png, at --size.
+    #[arg(long, value_name = "DIR")]
+    pub film: Option<PathBuf>,
     /// Camera pose YAW,PITCH,DISTANCE in degrees, degrees, metres (the window title shows the current one).
     #[arg(long, value_name = "YAW,PITCH,DIST")]
     pub camera: Option<String>,
@@ -71,6 +86,11 @@ impl Args {
             assets: self.assets.clone().unwrap_or_else(default_assets),
             model: self.model.clone(),
         }
+    }
+
+    /// The buffer to show: `--show`, or the lesson's own.
+    pub fn show<L: Lesson>(&self) -> Show {
+        self.show.unwrap_or(L::SHOWS)
     }
 
     pub fn camera(&self) -> Result<Camera> {
@@ -111,7 +131,15 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         Err(error) => {
             let text = error.to_string();
             let first = text.lines().next().unwrap_or("bad arguments");
-            bail!("{} (see --help)", first.trim_start_matches("error: "));
+            let first = first.trim_start_matches("error: ");
+            // clap names the allowed values on a line of their own: keep them on ours.
+            match text
+                .lines()
+                .find_map(|l| l.trim().strip_prefix("[possible values: "))
+            {
+                Some(values) => bail!("{first}: choose one of {}", values.trim_end_matches(']')),
+                None => bail!("{first} (see --help)"),
+            }
         }
     };
     if args.list_knobs {
@@ -120,40 +148,119 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
     }
     let knobs = Knobs::from_settings(L::KNOBS, &args.settings)?;
     let camera = args.camera()?;
+    let headless = args.list_steps || args.screenshot.is_some() || args.film.is_some();
+    if !headless {
+        return crate::window::run::<L>(&args, knobs, camera);
+    }
+    if args.frames.is_some() {
+        bail!("--frames counts window frames; --screenshot and --film render without a window");
+    }
+    let start = std::time::Instant::now();
+    let mut request = Request {
+        width: args.size.0,
+        height: args.size.1,
+        knobs,
+        camera,
+        scene: args.scene(),
+        read_stencil: false,
+        read_depth: false,
+        stop: args.step,
+        show: args.show::<L>(),
+        backend: args.backend.clone(),
+        verbose: args.verbose,
+    };
+    if args.list_steps {
+        // The steps depend on the knobs, not on the size: list them from a small frame.
+        (request.width, request.height) = (16, 16);
+        print!(
+            "{}",
+            steps::describe(&Headless::<L>::new(&request)?.steps())
+        );
+        return Ok(());
+    }
+    let headless = Headless::<L>::new(&request)?;
+    if args.verbose {
+        eprintln!("ready to render in {:.0?}", start.elapsed());
+    }
     if let Some(path) = &args.screenshot {
-        if args.frames.is_some() {
-            bail!("--frames counts window frames; --screenshot renders one frame without a window");
-        }
-        let start = std::time::Instant::now();
-        let request = Request {
-            width: args.size.0,
-            height: args.size.1,
-            knobs,
-            camera,
-            scene: args.scene(),
-            read_stencil: false,
-            read_depth: false,
-            backend: args.backend.clone(),
-            verbose: args.verbose,
-        };
-        let capture = headless::render::<L>(&request)?;
-        save_png(&capture.color, path)?;
+        save_png(&headless.capture()?.color, path)?;
         if args.verbose {
             eprintln!("wrote {} in {:.0?}", path.display(), start.elapsed());
         }
-        return Ok(());
     }
-    crate::window::run::<L>(&args, knobs, camera)
+    if let Some(dir) = &args.film {
+        let stills = headless.film()?;
+        if args.verbose {
+            eprintln!(
+                "rendered {} steps in {} ms",
+                stills.len(),
+                start.elapsed().as_millis()
+            );
+        }
+        save_film(&stills, dir)?;
+        if args.verbose {
+            let count = stills.len() * Show::BUFFERS.len();
+            eprintln!(
+                "wrote {count} images into {} in {} ms",
+                dir.display(),
+                start.elapsed().as_millis()
+            );
+        }
+    }
+    Ok(())
 }
 
-/// Writes a PNG, saying which file could not be written and why.
+/// Writes a film into `dir` (made if missing): `NN-<step>-{color,depth,stencil}.png` for every
+/// step, encoded on all cores.
+pub fn save_film(stills: &[Still], dir: &std::path::Path) -> Result<()> {
+    std::fs::create_dir_all(dir)
+        .with_context(|| format!("cannot write the film into `{}`", dir.display()))?;
+    let files: Vec<_> = stills
+        .iter()
+        .enumerate()
+        .flat_map(|(index, still)| {
+            Show::BUFFERS.map(|show| {
+                let path = dir.join(steps::film_file(index + 1, still.step, show));
+                (still.image(show), path)
+            })
+        })
+        .collect();
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = files
+            .chunks(files.len().div_ceil(threads).max(1))
+            .map(|chunk| {
+                scope.spawn(move || {
+                    chunk
+                        .iter()
+                        .try_for_each(|(image, path)| save_png(image, path))
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .try_for_each(|worker| worker.join().expect("a PNG encoder panicked"))
+    })
+}
+
+/// Writes a PNG, saying which file could not be written and why. The image goes to a temporary file
+/// beside `path` first and is renamed into place, so an interrupted run never leaves half a PNG
+/// where a good one was.
 pub fn save_png(image: &image::RgbaImage, path: &std::path::Path) -> Result<()> {
-    let file = std::fs::File::create(path)
-        .with_context(|| format!("cannot write screenshot `{}`", path.display()))?;
-    let writer = std::io::BufWriter::new(file);
-    image
-        .write_with_encoder(image::codecs::png::PngEncoder::new(writer))
-        .with_context(|| format!("cannot write screenshot `{}`", path.display()))
+    let name = path.file_name().unwrap_or_default().to_string_lossy();
+    let partial = path.with_file_name(format!(".{name}.partial"));
+    let written = (|| {
+        let file = std::fs::File::create(&partial)?;
+        let mut writer = std::io::BufWriter::new(file);
+        image.write_with_encoder(image::codecs::png::PngEncoder::new(&mut writer))?;
+        std::io::Write::flush(&mut writer)?;
+        std::fs::rename(&partial, path)?;
+        anyhow::Ok(())
+    })();
+    if written.is_err() {
+        let _ = std::fs::remove_file(&partial);
+    }
+    written.with_context(|| format!("cannot write screenshot `{}`", path.display()))
 }
 
 /// Mesa's drivers print "error: XDG_RUNTIME_DIR is invalid or not set" to stderr when that variable is

@@ -197,9 +197,9 @@ pub struct DepthStencil {
     pub texture: wgpu::Texture,
     /// Both aspects: the attachment of every render pass.
     pub view: wgpu::TextureView,
-    /// The depth aspect alone, for shaders that read the depth buffer (`view=depth`).
+    /// The depth aspect alone, for shaders that read the depth buffer (`--show depth`).
     pub depth_only: wgpu::TextureView,
-    /// Where `view=stencil` rebuilds the stencil values as colours (see `views`).
+    /// Where `--show stencil` rebuilds the stencil values as colours (see `views`).
     pub stencil_values: wgpu::TextureView,
 }
 
@@ -229,7 +229,7 @@ pub fn target_texture(
 
 impl DepthStencil {
     pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
-        // Sampled by view=depth, copied by the tests' readbacks.
+        // Sampled by --show depth, copied by the tests' readbacks.
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
         let size = (width, height);
         let texture = target_texture(

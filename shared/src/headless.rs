@@ -1,5 +1,6 @@
 //! The headless runner: one frame at W×H into a texture, read back as an image, and on request the
-//! stencil and depth buffers too (where the backend can copy them; the GL backend cannot).
+//! stencil and depth buffers too (where the backend can copy them; the GL backend cannot). It also
+//! films the frame: every step's colour, depth and stencil buffers as images.
 
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
@@ -10,6 +11,7 @@ use crate::knobs::Knobs;
 use crate::lesson::Lesson;
 use crate::runner::Runner;
 use crate::scene::SceneOptions;
+use crate::steps::{Show, Stop};
 use crate::views::DEPTH_COPY_FORMAT;
 
 /// What to render.
@@ -24,6 +26,10 @@ pub struct Request {
     pub read_stencil: bool,
     /// Also read back the depth buffer.
     pub read_depth: bool,
+    /// The step the frame stops after.
+    pub stop: Stop,
+    /// The buffer the colour image shows.
+    pub show: Show,
     pub backend: Option<String>,
     pub verbose: bool,
 }
@@ -39,6 +45,8 @@ impl Request {
             scene: SceneOptions::default(),
             read_stencil: false,
             read_depth: false,
+            stop: Stop::Last,
+            show: L::SHOWS,
             backend: None,
             verbose: false,
         })
@@ -48,7 +56,8 @@ impl Request {
 /// What came back.
 #[derive(Debug, Clone)]
 pub struct Capture {
-    /// The colours, alpha set to opaque as a window shows them.
+    /// The picture of the buffer the request showed (the colours, unless told otherwise), alpha set
+    /// to opaque as a window shows it.
     pub color: RgbaImage,
     /// One stencil value per pixel, rows top to bottom.
     pub stencil: Option<Vec<u8>>,
@@ -70,6 +79,28 @@ impl Capture {
     }
 }
 
+/// One step of a film: the three buffers after the step.
+#[derive(Debug, Clone)]
+pub struct Still {
+    /// The step's name.
+    pub step: &'static str,
+    /// The colours, the depth buffer linearised to grey, and the stencil buffer in false colour.
+    pub color: RgbaImage,
+    pub depth: RgbaImage,
+    pub stencil: RgbaImage,
+}
+
+impl Still {
+    /// The image of one of the three buffers.
+    pub fn image(&self, show: Show) -> &RgbaImage {
+        match show {
+            Show::Depth | Show::RawDepth => &self.depth,
+            Show::Stencil => &self.stencil,
+            Show::Color => &self.color,
+        }
+    }
+}
+
 /// Renders one frame of lesson `L`.
 pub fn render<L: Lesson>(request: &Request) -> Result<Capture> {
     Headless::<L>::new(request)?.capture()
@@ -80,8 +111,13 @@ pub fn render<L: Lesson>(request: &Request) -> Result<Capture> {
 pub struct Headless<L: Lesson> {
     runner: Runner<L>,
     color: wgpu::Texture,
+    /// Where the depth and the stencil buffer are painted to be seen.
+    depth_picture: wgpu::Texture,
+    stencil_picture: wgpu::Texture,
     read_stencil: bool,
     read_depth: bool,
+    stop: Stop,
+    show: Show,
 }
 
 impl<L: Lesson> Headless<L> {
@@ -105,12 +141,16 @@ impl<L: Lesson> Headless<L> {
                 size,
             )?;
             let device = &runner.gpu.device;
-            let color = target(device, "headless colour target", HEADLESS_FORMAT, size);
+            let picture = |label| target(device, label, HEADLESS_FORMAT, size);
             Ok(Self {
+                color: picture("headless colour target"),
+                depth_picture: picture("depth picture"),
+                stencil_picture: picture("stencil picture"),
                 runner,
-                color,
                 read_stencil: request.read_stencil,
                 read_depth: request.read_depth,
+                stop: request.stop,
+                show: request.show,
             })
         })
     }
@@ -121,19 +161,84 @@ impl<L: Lesson> Headless<L> {
         gpu.scoped(|| self.runner.set_knobs(knobs))
     }
 
+    /// The names of the frame's steps with the current knobs.
+    pub fn steps(&self) -> Vec<&'static str> {
+        self.runner.steps()
+    }
+
+    /// Where the frame stops from now on.
+    pub fn set_stop(&mut self, stop: Stop) {
+        self.stop = stop;
+    }
+
     /// Renders a frame and reads back what the request asked for.
     pub fn capture(&self) -> Result<Capture> {
         self.runner.gpu.scoped(|| self.capture_unscoped())
+    }
+
+    /// Renders the frame once, reading back the colour, depth and stencil buffers after every step.
+    pub fn film(&self) -> Result<Vec<Still>> {
+        self.runner.gpu.scoped(|| self.film_unscoped())
+    }
+
+    fn film_unscoped(&self) -> Result<Vec<Still>> {
+        let (runner, device) = (&self.runner, &self.runner.gpu.device);
+        if !runner.can_show(Show::Depth) {
+            bail!(crate::views::DepthViewPipelines::UNSUPPORTED);
+        }
+        let view = |texture: &wgpu::Texture| texture.create_view(&Default::default());
+        let (depth_view, stencil_view) = (view(&self.depth_picture), view(&self.stencil_picture));
+        let pictures = [&self.color, &self.depth_picture, &self.stencil_picture];
+        let mut readbacks = Vec::new();
+        let mut failure = None;
+        let (encoder, steps) = runner.record_each_step(&view(&self.color), &mut |encoder| {
+            let shown = runner
+                .show(encoder, Show::Depth, &depth_view)
+                .and_then(|()| runner.show(encoder, Show::Stencil, &stencil_view));
+            if let Err(error) = shown {
+                failure.get_or_insert(error);
+            }
+            let all = wgpu::TextureAspect::All;
+            readbacks.push(pictures.map(|t| Readback::new(device, encoder, t, all, 4)));
+        });
+        if let Some(error) = failure {
+            return Err(error);
+        }
+        runner.gpu.queue.submit([encoder.finish()]);
+        steps
+            .into_iter()
+            .zip(readbacks)
+            .map(|(step, readbacks)| {
+                let [color, depth, stencil] =
+                    readbacks.map(|readback| picture(readback.read(device)?, &self.color));
+                Ok(Still {
+                    step,
+                    color: color?,
+                    depth: depth?,
+                    stencil: stencil?,
+                })
+            })
+            .collect()
     }
 
     fn capture_unscoped(&self) -> Result<Capture> {
         let (runner, size) = (&self.runner, (self.color.width(), self.color.height()));
         let device = &runner.gpu.device;
         let color_view = self.color.create_view(&Default::default());
-        let mut encoder = runner.record(&color_view)?;
+        let (mut encoder, _) = runner.record(&color_view, self.stop)?;
+        let shown = match self.show {
+            Show::Color => &self.color,
+            Show::Depth | Show::RawDepth => &self.depth_picture,
+            Show::Stencil => &self.stencil_picture,
+        };
+        runner.show(
+            &mut encoder,
+            self.show,
+            &shown.create_view(&Default::default()),
+        )?;
 
         let all = wgpu::TextureAspect::All;
-        let mut readbacks = vec![Readback::new(device, &mut encoder, &self.color, all, 4)];
+        let mut readbacks = vec![Readback::new(device, &mut encoder, shown, all, 4)];
         if self.read_stencil {
             let stencil = &runner.depth_stencil.texture;
             let aspect = wgpu::TextureAspect::StencilOnly;
@@ -151,11 +256,7 @@ impl<L: Lesson> Headless<L> {
             .collect::<Result<Vec<_>>>()?
             .into_iter();
 
-        let mut color = RgbaImage::from_raw(size.0, size.1, bytes.next().unwrap())
-            .context("colour readback has the wrong size")?;
-        for pixel in color.pixels_mut() {
-            pixel.0[3] = 255;
-        }
+        let color = picture(bytes.next().unwrap(), shown)?;
         let stencil = self.read_stencil.then(|| bytes.next().unwrap());
         let depth = self
             .read_depth
@@ -166,6 +267,16 @@ impl<L: Lesson> Headless<L> {
             depth,
         })
     }
+}
+
+/// The bytes of an RGBA texture as an image, alpha set to opaque as a window shows it.
+fn picture(bytes: Vec<u8>, texture: &wgpu::Texture) -> Result<RgbaImage> {
+    let mut image = RgbaImage::from_raw(texture.width(), texture.height(), bytes)
+        .context("colour readback has the wrong size")?;
+    for pixel in image.pixels_mut() {
+        pixel.0[3] = 255;
+    }
+    Ok(image)
 }
 
 /// Refuses sizes the device cannot make.

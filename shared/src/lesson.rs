@@ -3,6 +3,10 @@
 //! A lesson is built from the GPU, the room and its knobs, and renders one frame into a colour view
 //! the caller gives plus the depth-stencil buffer the framework owns. It never knows whether a window
 //! exists: the window runner and the headless runner call the same `render`.
+//!
+//! A frame is a list of named **steps** ([`Frame::step`]), each one render pass. The names are data:
+//! `--list-steps`, `--step N`, `--film`, the window's `[` and `]`, the book's step strips and the tests
+//! all read them from the lesson's `render`, and nowhere else.
 
 use anyhow::Result;
 
@@ -10,7 +14,7 @@ use crate::camera::Camera;
 use crate::gpu::{DepthStencil, Gpu};
 use crate::knobs::{Knob, Knobs};
 use crate::scene::{self, Scene};
-use crate::views::DepthViewPipelines;
+use crate::steps::Show;
 
 // ANCHOR: lesson
 pub trait Lesson: Sized {
@@ -20,42 +24,101 @@ pub trait Lesson: Sized {
     const TITLE: &'static str;
     /// Every knob of the lesson, the right picture's values as defaults.
     const KNOBS: &'static [Knob];
+    /// The buffer the window and `--screenshot` show unless `--show` says otherwise.
+    const SHOWS: Show = Show::Color;
 
     /// Builds the lesson's pipelines for these knob values. Called again when a knob changes.
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> Result<Self>;
 
-    /// Records one frame.
+    /// Records one frame as named steps: `frame.clear()`, then `frame.step("...", |pass| ...)`.
     fn render(&self, frame: &mut Frame<'_>);
 }
 // ANCHOR_END: lesson
 
-/// Where to begin a pass: from cleared buffers, or on top of what the frame has drawn so far.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Start {
-    /// Colour to the sky, depth to 1.0 (the far plane), stencil to 0.
-    Cleared,
-    /// Keep what is there.
-    Kept,
-}
+/// The name of the step [`Frame::clear`] records.
+pub const CLEAR: &str = "clear";
 
-/// One frame being recorded: the targets, the room and the encoder.
+/// One frame being recorded: the targets, the room, and the steps met so far.
 pub struct Frame<'a> {
     pub gpu: &'a Gpu,
     pub scene: &'a Scene,
     /// Where the camera is this frame (for sorting transparent objects back to front).
     pub camera: Camera,
-    pub encoder: wgpu::CommandEncoder,
-    pub color: &'a wgpu::TextureView,
-    pub depth_stencil: &'a DepthStencil,
-    pub(crate) depth_view: Option<(&'a DepthViewPipelines, &'a wgpu::BindGroup)>,
-    /// Set when the lesson asked for something this backend cannot do.
-    pub(crate) unsupported: Option<&'static str>,
+    pub(crate) encoder: wgpu::CommandEncoder,
+    color: &'a wgpu::TextureView,
+    depth_stencil: &'a DepthStencil,
+    /// The name of every step the lesson's `render` met, in order, drawn or not.
+    pub(crate) steps: Vec<&'static str>,
+    /// Steps after the first `stop` are named but not recorded.
+    stop: usize,
+    /// Called after each recorded step, to look at the buffers mid-frame (`--film`).
+    after_step: Option<&'a mut dyn FnMut(&mut wgpu::CommandEncoder)>,
 }
 
-impl Frame<'_> {
+impl<'a> Frame<'a> {
+    /// A frame that records the first `stop` steps (all of them with `usize::MAX`), and calls
+    /// `after_step` after each.
+    pub(crate) fn new(
+        gpu: &'a Gpu,
+        scene: &'a Scene,
+        camera: Camera,
+        (color, depth_stencil): (&'a wgpu::TextureView, &'a DepthStencil),
+        stop: usize,
+        after_step: Option<&'a mut dyn FnMut(&mut wgpu::CommandEncoder)>,
+    ) -> Self {
+        let encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("frame"),
+            });
+        Self {
+            gpu,
+            scene,
+            camera,
+            encoder,
+            color,
+            depth_stencil,
+            steps: Vec::new(),
+            stop,
+            after_step,
+        }
+    }
+
+    // ANCHOR: steps
+    /// The step "clear": colour to the sky, every depth to 1.0 (the far plane), every stencil
+    /// value to 0.
+    pub fn clear(&mut self) {
+        self.record(CLEAR, Start::Cleared, |_| {});
+    }
+
+    /// One named step: a render pass on the colour and depth-stencil targets, keeping what earlier
+    /// steps drew, with the frame's camera and lights bound; `draw` records into it.
+    pub fn step(&mut self, name: &'static str, draw: impl FnOnce(&mut wgpu::RenderPass<'_>)) {
+        self.record(name, Start::Kept, draw);
+    }
+    // ANCHOR_END: steps
+
+    fn record(
+        &mut self,
+        name: &'static str,
+        start: Start,
+        draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
+    ) {
+        self.steps.push(name);
+        if self.steps.len() > self.stop {
+            return;
+        }
+        let mut pass = self.pass(name, start);
+        draw(&mut pass);
+        drop(pass);
+        if let Some(after_step) = &mut self.after_step {
+            after_step(&mut self.encoder);
+        }
+    }
+
     /// Begins a render pass on the colour and depth-stencil targets, with the frame's camera and
     /// lights bound.
-    pub fn pass(&mut self, label: &str, start: Start) -> wgpu::RenderPass<'_> {
+    fn pass(&mut self, label: &str, start: Start) -> wgpu::RenderPass<'_> {
         let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::texture::srgb_to_linear(c) as f64);
         let (color, depth, stencil) = match start {
             Start::Cleared => (
@@ -94,20 +157,11 @@ impl Frame<'_> {
         self.scene.bind_frame(&mut pass);
         pass
     }
+}
 
-    /// Replaces the colours with the stencil buffer in false colour (see `views::stencil_colour`).
-    pub fn show_stencil(&mut self) {
-        let (device, stencil_view) = (&self.gpu.device, &self.scene.stencil_view);
-        stencil_view.show(device, &mut self.encoder, self.color, self.depth_stencil);
-    }
-
-    /// Replaces the colours with the depth buffer: raw values on the left, linearised on the right.
-    pub fn show_depth(&mut self) {
-        match self.depth_view {
-            Some((pipelines, bind_group)) => {
-                pipelines.show(&mut self.encoder, self.color, bind_group)
-            }
-            None => self.unsupported = Some(DepthViewPipelines::UNSUPPORTED),
-        }
-    }
+/// Where a step's pass begins: from cleared buffers, or on top of what the frame has drawn so far.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Start {
+    Cleared,
+    Kept,
 }

@@ -1,7 +1,7 @@
 //! What every lesson after lesson 3 does before its own steps: the room as usual, then the mirror's
 //! visible pixels marked with 1 in the stencil buffer — lesson 3's frame, kept here once.
 
-use crate::lesson::{Frame, Start};
+use crate::lesson::Frame;
 use crate::{Gpu, Scene, states};
 
 pub struct MarkedRoom {
@@ -17,19 +17,21 @@ impl MarkedRoom {
         }
     }
 
-    // ANCHOR: begin
-    /// Begins the frame's pass: clears colour, depth (to 1.0) and stencil (to 0), draws the room but
-    /// the mirror with OPAQUE, and marks the mirror's visible pixels with 1 using MARK_MIRROR. The
-    /// stencil reference stays 1 for the lesson's own steps.
-    pub fn begin<'f>(&self, frame: &'f mut Frame<'_>, label: &str) -> wgpu::RenderPass<'f> {
+    // ANCHOR: steps
+    /// The frame's first three steps: clear colour, depth (to 1.0) and stencil (to 0); draw the
+    /// room but the mirror with OPAQUE; mark the mirror's visible pixels with 1 using MARK_MIRROR.
+    pub fn steps(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        let mut pass = frame.pass(label, Start::Cleared);
-        pass.set_pipeline(&self.draw_room);
-        scene.draw_room(&mut pass);
-        pass.set_pipeline(&self.mark_mirror);
-        pass.set_stencil_reference(1);
-        scene.mirror.draw(&mut pass);
-        pass
+        frame.clear();
+        frame.step("draw the room", |pass| {
+            pass.set_pipeline(&self.draw_room);
+            scene.draw_room(pass);
+        });
+        frame.step("mark the mirror", |pass| {
+            pass.set_pipeline(&self.mark_mirror);
+            pass.set_stencil_reference(1);
+            scene.mirror.draw(pass);
+        });
     }
-    // ANCHOR_END: begin
+    // ANCHOR_END: steps
 }

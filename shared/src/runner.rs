@@ -10,6 +10,7 @@ use crate::gpu::{DepthStencil, Gpu};
 use crate::knobs::Knobs;
 use crate::lesson::{Frame, Lesson};
 use crate::scene::{Scene, SceneOptions};
+use crate::steps::{Show, Stop};
 use crate::views::DepthViewPipelines;
 
 pub struct Runner<L: Lesson> {
@@ -62,37 +63,94 @@ impl<L: Lesson> Runner<L> {
         Ok(())
     }
 
-    /// Records the lesson's frame into `color` and returns the encoder, for the caller to add copies to
-    /// and submit. Fails when the lesson asked for something this backend cannot do.
-    pub fn record(&self, color: &wgpu::TextureView) -> Result<wgpu::CommandEncoder> {
+    /// The names of the frame's steps with the current knobs, in order (nothing is recorded).
+    pub fn steps(&self) -> Vec<&'static str> {
+        // A frame that stops before its first step records nothing: any view will do as its colour.
+        self.frame(&self.depth_stencil.stencil_values, 0, None)
+            .steps
+    }
+
+    /// Records the lesson's frame into `color`, up to the step `stop` names, and returns the encoder
+    /// (for the caller to add views, copies and submit) with the frame's step names. Fails on a step
+    /// past the end.
+    pub fn record(
+        &self,
+        color: &wgpu::TextureView,
+        stop: Stop,
+    ) -> Result<(wgpu::CommandEncoder, Vec<&'static str>)> {
+        self.update();
+        let frame = self.frame(color, stop.count(), None);
+        stop.resolve(&frame.steps)?;
+        Ok((frame.encoder, frame.steps))
+    }
+
+    /// Records the whole frame into `color`, calling `after_step` with the encoder after every
+    /// step: one frame that shows each step's buffers (`--film`).
+    pub fn record_each_step(
+        &self,
+        color: &wgpu::TextureView,
+        after_step: &mut dyn FnMut(&mut wgpu::CommandEncoder),
+    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
+        self.update();
+        let frame = self.frame(color, usize::MAX, Some(after_step));
+        (frame.encoder, frame.steps)
+    }
+
+    /// Writes this frame's camera and lights.
+    fn update(&self) {
         let (width, height) = self.depth_stencil.size();
-        self.scene
-            .update(&self.gpu.queue, &self.camera, width as f32 / height as f32);
-        let encoder = self
-            .gpu
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some(L::NAME),
-            });
-        let mut frame = Frame {
-            gpu: &self.gpu,
-            scene: &self.scene,
-            camera: self.camera,
-            encoder,
-            color,
-            depth_stencil: &self.depth_stencil,
-            depth_view: self
-                .scene
-                .depth_view
-                .as_ref()
-                .zip(self.depth_bind_group.as_ref()),
-            unsupported: None,
-        };
+        let aspect = width as f32 / height as f32;
+        self.scene.update(&self.gpu.queue, &self.camera, aspect);
+    }
+
+    fn frame<'f>(
+        &'f self,
+        color: &'f wgpu::TextureView,
+        stop: usize,
+        after_step: Option<&'f mut dyn FnMut(&mut wgpu::CommandEncoder)>,
+    ) -> Frame<'f> {
+        let targets = (color, &self.depth_stencil);
+        let scene = &self.scene;
+        let mut frame = Frame::new(&self.gpu, scene, self.camera, targets, stop, after_step);
         self.lesson.render(&mut frame);
-        match frame.unsupported {
-            Some(problem) => Err(anyhow::anyhow!(problem)),
-            None => Ok(frame.encoder),
+        frame
+    }
+
+    /// Whether this backend can show that buffer (the GL backend cannot read depth in a shader).
+    pub fn can_show(&self, show: Show) -> bool {
+        match show {
+            Show::Depth | Show::RawDepth => self.depth_bind_group.is_some(),
+            Show::Color | Show::Stencil => true,
         }
+    }
+
+    /// Paints `target` (a texture of the scene's colour format and the frame's size) with what the
+    /// depth or stencil buffer holds now; for [`Show::Color`] does nothing, the colours being the
+    /// frame's own target.
+    pub fn show(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        show: Show,
+        target: &wgpu::TextureView,
+    ) -> Result<()> {
+        let depth = || {
+            let pipelines = self.scene.depth_view.as_ref();
+            pipelines
+                .zip(self.depth_bind_group.as_ref())
+                .ok_or_else(|| anyhow::anyhow!(DepthViewPipelines::UNSUPPORTED))
+        };
+        match show {
+            Show::Color => {}
+            Show::Depth | Show::RawDepth => {
+                let (pipelines, bind_group) = depth()?;
+                pipelines.show(encoder, target, bind_group, show == Show::RawDepth);
+            }
+            Show::Stencil => {
+                let (device, views) = (&self.gpu.device, &self.scene.stencil_view);
+                views.show(device, encoder, target, &self.depth_stencil);
+            }
+        }
+        Ok(())
     }
 
     /// Copies the depth buffer into an R32Float texture the caller can read back.

@@ -82,13 +82,59 @@ pub fn check_lesson_binary(exe: &Path, scratch: &Path) {
     run(exe, &["--set", "no-such-knob=1", "--screenshot", shot_arg])
         .assert_one_line_error("unknown knob `no-such-knob`");
 
+    // The frame's steps: listed as the book's strip captions them, each one a screenshot away,
+    // and all of them filmed.
+    let listed = run(exe, &["--list-steps"]);
+    listed.assert_clean_success();
+    let count = listed.stdout.lines().count();
+    assert!(count >= 2, "--list-steps printed:\n{}", listed.stdout);
+    let lesson = exe
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .expect("a lesson binary");
+    let strip = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../book/src/images/steps")
+        .join(lesson)
+        .join("strip.html");
+    let strip = std::fs::read_to_string(&strip).unwrap_or_default();
+    assert_eq!(
+        listed.stdout,
+        strip_captions(&strip),
+        "--list-steps against the book's strip"
+    );
+    let step = [
+        "--size",
+        "320x180",
+        "--step",
+        "2",
+        "--show",
+        "stencil",
+        "--screenshot",
+        shot_arg,
+    ];
+    run(exe, &step).assert_clean_success();
+    let film = scratch.join("film");
+    let _ = std::fs::remove_dir_all(&film);
+    let film_arg = film.to_str().expect("a UTF-8 path");
+    run(exe, &["--size", "160x90", "--film", film_arg]).assert_clean_success();
+    let files = std::fs::read_dir(&film).map_or(0, |entries| entries.count());
+    assert_eq!(
+        files,
+        3 * count,
+        "--film wrote {files} files for {count} steps"
+    );
+    let past = (count + 1).to_string();
+    run(exe, &["--step", &past, "--screenshot", shot_arg]).assert_one_line_error("no step");
+
     match std::env::var("DISPLAY") {
-        Ok(display) => run_with(
-            exe,
-            &["--frames", "30", "--size", "320x240"],
-            &[("DISPLAY", &display)],
-        )
-        .assert_clean_success(),
+        Ok(display) => {
+            let window = ["--frames", "30", "--size", "320x240"];
+            run_with(exe, &window, &[("DISPLAY", &display)]).assert_clean_success();
+            let stepped = [
+                "--frames", "5", "--size", "320x240", "--step", "2", "--show", "depth",
+            ];
+            run_with(exe, &stepped, &[("DISPLAY", &display)]).assert_clean_success();
+        }
         Err(_) => {
             assert!(
                 std::env::var_os("CI").is_none(),
@@ -97,4 +143,14 @@ pub fn check_lesson_binary(exe: &Path, scratch: &Path) {
             eprintln!("window check skipped: no DISPLAY (run under xvfb-run to include it)");
         }
     }
+}
+
+/// The step captions of a book strip (see the tests' `strips` module), as `--list-steps` prints
+/// them: `1. clear`, one a line.
+pub fn strip_captions(html: &str) -> String {
+    html.split("<th class=\"step\">")
+        .skip(1)
+        .filter_map(|row| row.split_once("</th>"))
+        .map(|(caption, _)| format!("{caption}\n"))
+        .collect()
 }

@@ -1,6 +1,6 @@
-//! Looking inside the buffers: the depth buffer drawn as grey levels (`view=depth`), the stencil
-//! buffer in false colour (`view=stencil`), and the copy of depth into a readable colour texture that
-//! tests use (a depth aspect of `Depth24PlusStencil8` cannot be copied to a buffer directly).
+//! Looking inside the buffers: the depth buffer drawn as grey levels (`--show depth`), the stencil
+//! buffer in false colour (`--show stencil`), and the copy of depth into a readable colour texture
+//! that tests use (a depth aspect of `Depth24PlusStencil8` cannot be copied to a buffer directly).
 
 use wgpu::util::DeviceExt;
 
@@ -14,6 +14,7 @@ pub struct DepthViewPipelines {
     layout: wgpu::BindGroupLayout,
     planes: wgpu::Buffer,
     show: wgpu::RenderPipeline,
+    show_raw: wgpu::RenderPipeline,
     copy: wgpu::RenderPipeline,
 }
 
@@ -85,6 +86,7 @@ impl DepthViewPipelines {
         };
         Self {
             show: pipeline("SHOW_DEPTH", "fs_depth", color_format),
+            show_raw: pipeline("SHOW_RAW_DEPTH", "fs_raw_depth", color_format),
             copy: pipeline("COPY_DEPTH", "fs_copy_depth", DEPTH_COPY_FORMAT),
             layout,
             planes,
@@ -109,14 +111,19 @@ impl DepthViewPipelines {
         })
     }
 
-    /// Draws the depth buffer over `color` (raw on the left, linearised on the right).
+    /// Paints `color` with the depth buffer as grey: linearised, or with `raw` the stored values.
     pub fn show(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         color: &wgpu::TextureView,
         bind_group: &wgpu::BindGroup,
+        raw: bool,
     ) {
-        fullscreen_pass(encoder, "show depth", &self.show, color, bind_group);
+        let (label, pipeline) = match raw {
+            false => ("show depth", &self.show),
+            true => ("show raw depth", &self.show_raw),
+        };
+        fullscreen_pass(encoder, label, pipeline, color, bind_group);
     }
 
     /// Copies the depth buffer into `target`, an R32Float texture of the same size.
@@ -160,7 +167,7 @@ fn fullscreen_pass(
 }
 
 // ANCHOR: palette
-/// The false colour of a stencil value in `view=stencil` (sRGB): 0 is near black, 1 white, the next
+/// The false colour of a stencil value in `--show stencil` (sRGB): 0 is near black, 1 white, the next
 /// few strong distinct colours, 255 (all bits set: what `invert` and `decrement-wrap` make of 0)
 /// magenta, and the rest hues spread by the golden ratio.
 pub fn stencil_colour(value: u8) -> [u8; 3] {
@@ -189,10 +196,10 @@ pub fn stencil_colour(value: u8) -> [u8; 3] {
 }
 // ANCHOR_END: palette
 
-/// The format the stencil values are rebuilt in for `view=stencil`: value / 255 in one byte.
+/// The format the stencil values are rebuilt in for `--show stencil`: value / 255 in one byte.
 pub const STENCIL_VALUES_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R8Unorm;
 
-/// The pipelines of `view=stencil`; built once with the scene.
+/// The pipelines of `--show stencil`; built once with the scene.
 pub struct StencilViewPipeline {
     /// One per bit i: passes where bit i of the stored value is set (read mask and reference 1 << i).
     bits: Vec<wgpu::RenderPipeline>,

@@ -1,6 +1,6 @@
 //! The window runner (winit 0.30): the lesson in a window, an orbit camera on the mouse, knobs on the
-//! number keys, and the lesson, its knobs and the camera pose in the title. It survives minimising,
-//! resizing, and surfaces that go `Outdated` or `Lost`.
+//! number keys, the frame's steps on `[` and `]`, the buffer shown on `Tab`, and all of it in the
+//! title. It survives minimising, resizing, and surfaces that go `Outdated` or `Lost`.
 
 use std::sync::Arc;
 
@@ -19,6 +19,7 @@ use crate::headless::check_size;
 use crate::knobs::Knobs;
 use crate::lesson::Lesson;
 use crate::runner::Runner;
+use crate::steps::{Show, Stop};
 
 /// Opens the lesson in a window and runs until it is closed (or `--frames` frames were shown).
 pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
@@ -61,6 +62,9 @@ struct State<L: Lesson> {
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
     runner: Runner<L>,
+    /// The step the frame stops after, and the buffer shown.
+    stop: Stop,
+    show: Show,
     drag_from: Option<PhysicalPosition<f64>>,
     cursor: PhysicalPosition<f64>,
     modifiers: ModifiersState,
@@ -103,11 +107,18 @@ impl<L: Lesson> App<'_, L> {
             self.camera,
             (config.width, config.height),
         )?;
+        let (stop, show) = (self.args.step, self.args.show::<L>());
+        stop.resolve(&runner.steps())?;
+        if !runner.can_show(show) {
+            anyhow::bail!(crate::views::DepthViewPipelines::UNSUPPORTED);
+        }
         let state = State {
             window,
             surface,
             config,
             runner,
+            stop,
+            show,
             drag_from: None,
             cursor: PhysicalPosition::new(0.0, 0.0),
             modifiers: ModifiersState::empty(),
@@ -142,6 +153,9 @@ impl<L: Lesson> App<'_, L> {
 
 impl<L: Lesson> State<L> {
     fn update_title(&self) {
+        let steps = self.runner.steps();
+        let number = self.stop.resolve(&steps).unwrap_or(steps.len());
+        let step = steps.get(number.wrapping_sub(1)).unwrap_or(&"");
         let knobs: Vec<String> = self
             .runner
             .knobs
@@ -150,8 +164,10 @@ impl<L: Lesson> State<L> {
             .map(|(i, (name, value))| format!("[{}] {name}={value}", i + 1))
             .collect();
         self.window.set_title(&format!(
-            "{} — {} — camera {}",
+            "{} — step {number}/{}: {step} — showing {} — {} — camera {}",
             L::NAME,
+            steps.len(),
+            self.show.name(),
             knobs.join(" "),
             self.runner.camera
         ));
@@ -209,7 +225,8 @@ impl<L: Lesson> State<L> {
             label: Some("window frame view"),
             ..Default::default()
         });
-        let encoder = self.runner.record(&view)?;
+        let (mut encoder, _) = self.runner.record(&view, self.stop)?;
+        self.runner.show(&mut encoder, self.show, &view)?;
         self.runner.gpu.queue.submit([encoder.finish()]);
         self.window.pre_present_notify();
         self.runner.gpu.queue.present(frame);
@@ -230,8 +247,34 @@ impl<L: Lesson> State<L> {
             let mut knobs = self.runner.knobs.clone();
             if knobs.cycle(index, !self.modifiers.shift_key()) {
                 self.runner.set_knobs(knobs)?;
+                // Other knobs may make a frame of fewer steps.
+                let count = self.runner.steps().len();
+                if matches!(self.stop, Stop::After(n) if n >= count) {
+                    self.stop = Stop::Last;
+                }
                 return Ok(true);
             }
+        }
+        if code == BracketLeft || code == BracketRight {
+            let count = self.runner.steps().len();
+            let number = self.stop.resolve(&self.runner.steps()).unwrap_or(count);
+            let number = match code {
+                BracketLeft => number.saturating_sub(1).max(1),
+                _ => (number + 1).min(count),
+            };
+            self.stop = if number == count {
+                Stop::Last
+            } else {
+                Stop::After(number)
+            };
+            return Ok(true);
+        }
+        if code == Tab {
+            self.show = self.show.next();
+            if !self.runner.can_show(self.show) {
+                self.show = self.show.next();
+            }
+            return Ok(true);
         }
         if code == KeyC {
             println!("--camera {}", self.runner.camera);

@@ -18,6 +18,12 @@ pub fn problems(src: &Path) -> Vec<String> {
         let dir = page.parent().unwrap_or(src);
         for (line_number, line) in text.lines().enumerate() {
             let at = format!("{}:{}", page.display(), line_number + 1);
+            // A tab in a page is almost always a `\t` that lost its backslash (`\text` in math).
+            if line.contains('\t') {
+                problems.push(format!(
+                    "{at}: a tab character (a lost backslash, as in \\text?)"
+                ));
+            }
             for include in includes(line) {
                 if let Err(problem) = check_include(dir, &include) {
                     problems.push(format!("{at}: {{{{#{include}}}}}: {problem}"));
@@ -29,8 +35,7 @@ pub fn problems(src: &Path) -> Vec<String> {
                     problems.push(format!("{at}: image {image} does not exist"));
                 }
                 let name = Path::new(&image).file_stem().and_then(|s| s.to_str());
-                let from_catalogue = name
-                    .is_some_and(|name| crate::shots::SHOTS.iter().any(|shot| shot.name == name));
+                let from_catalogue = name.is_some_and(catalogued);
                 if image.starts_with("images/") && !from_catalogue {
                     problems.push(format!(
                         "{at}: image {image} is not made by `cargo screenshots` (add it to the catalogue)"
@@ -40,6 +45,16 @@ pub fn problems(src: &Path) -> Vec<String> {
         }
     }
     problems
+}
+
+/// Whether `cargo screenshots` makes the image `images/<name>.png`: a screenshot, or a pair's
+/// enlarged crop or difference image. (The step strips' images are in the strips' HTML.)
+fn catalogued(name: &str) -> bool {
+    use crate::shots::{PAIRS, SHOTS};
+    SHOTS.iter().any(|shot| shot.name == name)
+        || PAIRS
+            .iter()
+            .any(|pair| pair.zoom_name() == name || pair.difference_name() == name)
 }
 
 fn markdown_files(dir: &Path) -> Vec<PathBuf> {

@@ -20,6 +20,8 @@ pub struct Comparison {
     pub visible_share: f32,
     /// Each pixel's error, coloured with FLIP's magma map (black: none, yellow: large).
     pub difference: RgbImage,
+    /// Each pixel's error (0..1), row-major: where the differences lie, for placing the book's crops.
+    pub errors: Vec<f32>,
 }
 
 /// How far an image may be from its reference and still pass.
@@ -73,6 +75,7 @@ pub fn compare(reference: &RgbaImage, test: &RgbaImage) -> Result<Comparison> {
         visible_share: visible as f32 / values.len() as f32,
         difference: RgbImage::from_raw(width, height, difference.to_vec())
             .context("FLIP returned an image of the wrong size")?,
+        errors: values,
     })
 }
 

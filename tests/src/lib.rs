@@ -4,7 +4,9 @@
 pub mod book;
 pub mod flip;
 pub mod geometry;
+pub mod pairs;
 pub mod shots;
+pub mod strips;
 
 use std::path::PathBuf;
 

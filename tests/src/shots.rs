@@ -6,10 +6,9 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
-use workbook::Knobs;
-use workbook::Lesson;
 use workbook::camera::Camera;
-use workbook::headless::{Capture, Headless, Request};
+use workbook::headless::{Capture, Headless, Request, Still};
+use workbook::{Knobs, Lesson, Show};
 
 use crate::flip::{self, Threshold};
 
@@ -41,170 +40,205 @@ pub struct Shot {
     pub settings: &'static [&'static str],
     /// A camera pose other than the default, as given to `--camera`.
     pub camera: Option<&'static str>,
+    /// The buffer shown, where it is not the lesson's own (`--show`).
+    pub show: Option<Show>,
     pub threshold: Threshold,
 }
+
+/// What the entries of [`SHOTS`] leave out: default knobs, camera and buffer, the strict threshold.
+const SHOT: Shot = Shot {
+    name: "",
+    lesson: "",
+    settings: &[],
+    camera: None,
+    show: None,
+    threshold: STRICT,
+};
 
 pub const SHOTS: &[Shot] = &[
     Shot {
         name: "depth-test",
         lesson: "depth-test",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "depth-test-always",
         lesson: "depth-test",
         settings: &["depth=always"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "depth-test-painter",
         lesson: "depth-test",
         settings: &["depth=always", "order=far-first"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
-        name: "depth-test-view-depth",
+        name: "depth-test-show-depth",
         lesson: "depth-test",
-        settings: &["view=depth"],
-        camera: None,
-        threshold: STRICT,
+        show: Some(Show::Depth),
+        ..SHOT
+    },
+    Shot {
+        name: "depth-test-show-raw-depth",
+        lesson: "depth-test",
+        show: Some(Show::RawDepth),
+        ..SHOT
     },
     Shot {
         name: "stencil-basics",
         lesson: "stencil-basics",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
-        name: "stencil-basics-view-stencil",
+        name: "stencil-basics-show-stencil",
         lesson: "stencil-basics",
-        settings: &["view=stencil"],
-        camera: None,
-        threshold: STRICT,
+        show: Some(Show::Stencil),
+        ..SHOT
     },
     Shot {
         name: "stencil-basics-less",
         lesson: "stencil-basics",
         settings: &["compare=less"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "stencil-basics-always",
         lesson: "stencil-basics",
         settings: &["compare=always"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "stencil-basics-overdraw",
         lesson: "stencil-basics",
-        settings: &["compare=always", "pass-op=increment-clamp", "view=stencil"],
-        camera: None,
-        threshold: STRICT,
+        settings: &["compare=always", "pass-op=increment-clamp"],
+        show: Some(Show::Stencil),
+        ..SHOT
     },
+    // Lesson 3 shows the stencil buffer unless told otherwise.
     Shot {
         name: "mark-mirror",
         lesson: "mark-mirror",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "mark-mirror-no-depth-test",
         lesson: "mark-mirror",
         settings: &["mark-depth-test=off"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "mark-mirror-color",
         lesson: "mark-mirror",
-        settings: &["view=color"],
-        camera: None,
-        threshold: STRICT,
+        show: Some(Show::Color),
+        ..SHOT
     },
     Shot {
         name: "reflect-skull",
         lesson: "reflect-skull",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "reflect-skull-behind",
         lesson: "reflect-skull",
-        settings: &[],
         camera: Some(BEHIND_THE_WALL),
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "reflect-skull-no-stencil-behind",
         lesson: "reflect-skull",
         settings: &["stencil=off"],
         camera: Some(BEHIND_THE_WALL),
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "reflect-skull-unreflected-lights",
         lesson: "reflect-skull",
         settings: &["reflect-lights=off"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "winding-fix",
         lesson: "winding-fix",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "winding-fix-off",
         lesson: "winding-fix",
         settings: &["winding-fix=off"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "transparent-mirror",
         lesson: "transparent-mirror",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "transparent-mirror-opaque",
         lesson: "transparent-mirror",
         settings: &["blend=off"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "transparent-mirror-alpha-0.25",
         lesson: "transparent-mirror",
         settings: &["mirror-alpha=0.25"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "drawing-order",
         lesson: "drawing-order",
-        settings: &[],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
     },
     Shot {
         name: "drawing-order-luna",
         lesson: "drawing-order",
         settings: &["order=luna"],
-        camera: None,
-        threshold: STRICT,
+        ..SHOT
+    },
+];
+
+/// A wrong picture of the book and the right one it is shown beside. `cargo screenshots` makes an
+/// enlarged crop of where they differ and the difference image for each (see [`crate::pairs`]).
+#[derive(Debug)]
+pub struct Pair {
+    /// The names of two shots of [`SHOTS`].
+    pub wrong: &'static str,
+    pub right: &'static str,
+}
+
+pub const PAIRS: &[Pair] = &[
+    Pair {
+        wrong: "depth-test-always",
+        right: "depth-test",
+    },
+    Pair {
+        wrong: "stencil-basics-always",
+        right: "stencil-basics",
+    },
+    Pair {
+        wrong: "mark-mirror-no-depth-test",
+        right: "mark-mirror",
+    },
+    Pair {
+        wrong: "reflect-skull-no-stencil-behind",
+        right: "reflect-skull-behind",
+    },
+    Pair {
+        wrong: "reflect-skull-unreflected-lights",
+        right: "reflect-skull",
+    },
+    Pair {
+        wrong: "winding-fix-off",
+        right: "winding-fix",
+    },
+    Pair {
+        wrong: "transparent-mirror-opaque",
+        right: "transparent-mirror",
+    },
+    Pair {
+        wrong: "drawing-order-luna",
+        right: "drawing-order",
     },
 ];
 
@@ -229,18 +263,38 @@ impl Shot {
         if let Some(camera) = self.camera {
             command += &format!(" --camera {camera}");
         }
+        if let Some(show) = self.show {
+            command += &format!(" --show {}", show.name());
+        }
         command + &format!(" --screenshot {}.png", self.name)
     }
 
+    /// Renders the shot at the book's size.
     pub fn render(&self) -> Result<RgbaImage> {
+        self.render_at(SIZE)
+    }
+
+    /// Renders the shot at another size (the zoomed crops of [`Pair`] use a larger one).
+    pub fn render_at(&self, size: (u32, u32)) -> Result<RgbaImage> {
         let camera = self.camera.map(Camera::parse).transpose()?;
         let capture = render(self.lesson, self.settings, |request| {
-            (request.width, request.height) = SIZE;
+            (request.width, request.height) = size;
             if let Some(camera) = camera {
                 request.camera = camera;
             }
+            if let Some(show) = self.show {
+                request.show = show;
+            }
         })?;
         Ok(capture.color)
+    }
+
+    /// The shot called `name`.
+    pub fn named(name: &str) -> Result<&'static Shot> {
+        SHOTS
+            .iter()
+            .find(|shot| shot.name == name)
+            .with_context(|| format!("there is no screenshot called `{name}`"))
     }
 
     /// Renders the shot and compares it with its reference.
@@ -260,18 +314,36 @@ pub const LESSONS: &[&str] = &[
     "drawing-order",
 ];
 
-/// The knobs of a lesson, by package name.
-pub fn knobs(lesson: &str) -> Result<&'static [workbook::Knob]> {
+/// Something to do with a lesson's type, given its package name: see [`for_lesson`].
+pub trait ForLesson {
+    type Output;
+    fn run<L: Lesson>(self) -> Self::Output;
+}
+
+/// Runs `task` with the lesson called `lesson`: the one place that maps package names to types.
+pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
     Ok(match lesson {
-        "depth-test" => depth_test::DepthTest::KNOBS,
-        "stencil-basics" => stencil_basics::StencilBasics::KNOBS,
-        "mark-mirror" => mark_mirror::MarkMirror::KNOBS,
-        "reflect-skull" => reflect_skull::ReflectSkull::KNOBS,
-        "winding-fix" => winding_fix::WindingFix::KNOBS,
-        "transparent-mirror" => transparent_mirror::TransparentMirror::KNOBS,
-        "drawing-order" => drawing_order::DrawingOrder::KNOBS,
+        "depth-test" => task.run::<depth_test::DepthTest>(),
+        "stencil-basics" => task.run::<stencil_basics::StencilBasics>(),
+        "mark-mirror" => task.run::<mark_mirror::MarkMirror>(),
+        "reflect-skull" => task.run::<reflect_skull::ReflectSkull>(),
+        "winding-fix" => task.run::<winding_fix::WindingFix>(),
+        "transparent-mirror" => task.run::<transparent_mirror::TransparentMirror>(),
+        "drawing-order" => task.run::<drawing_order::DrawingOrder>(),
         other => bail!("there is no lesson called `{other}`"),
     })
+}
+
+/// The knobs of a lesson, by package name.
+pub fn knobs(lesson: &str) -> Result<&'static [workbook::Knob]> {
+    struct Knobs;
+    impl ForLesson for Knobs {
+        type Output = &'static [workbook::Knob];
+        fn run<L: Lesson>(self) -> Self::Output {
+            L::KNOBS
+        }
+    }
+    for_lesson(lesson, Knobs)
 }
 
 /// Renders lesson `lesson` headless with these knob settings, after `adjust` changed the request.
@@ -292,40 +364,51 @@ pub fn render_each(
     each: &[Vec<String>],
     adjust: impl FnOnce(&mut Request),
 ) -> Result<Vec<Capture>> {
-    fn go<L: Lesson>(
-        each: &[Vec<String>],
-        adjust: impl FnOnce(&mut Request),
-    ) -> Result<Vec<Capture>> {
-        let first = each.first().map(Vec::as_slice).unwrap_or_default();
-        let mut request = Request::new::<L>(first)?;
-        adjust(&mut request);
-        let mut headless = Headless::<L>::new(&request)?;
-        let mut captures = Vec::with_capacity(each.len());
-        for (index, settings) in each.iter().enumerate() {
-            let knobs = Knobs::from_settings(L::KNOBS, settings)?;
-            // The first settings were built with the request already.
-            let rebuilt = if index == 0 {
-                Ok(())
-            } else {
-                headless.set_knobs(knobs)
-            };
-            let capture = rebuilt
-                .and_then(|()| headless.capture())
-                .with_context(|| format!("{} --set {}", L::NAME, settings.join(" --set ")))?;
-            captures.push(capture);
+    struct Each<'a, A>(&'a [Vec<String>], A);
+    impl<A: FnOnce(&mut Request)> ForLesson for Each<'_, A> {
+        type Output = Result<Vec<Capture>>;
+        fn run<L: Lesson>(self) -> Self::Output {
+            let Each(each, adjust) = self;
+            let first = each.first().map(Vec::as_slice).unwrap_or_default();
+            let mut request = Request::new::<L>(first)?;
+            adjust(&mut request);
+            let mut headless = Headless::<L>::new(&request)?;
+            let mut captures = Vec::with_capacity(each.len());
+            for (index, settings) in each.iter().enumerate() {
+                let knobs = Knobs::from_settings(L::KNOBS, settings)?;
+                // The first settings were built with the request already.
+                let rebuilt = if index == 0 {
+                    Ok(())
+                } else {
+                    headless.set_knobs(knobs)
+                };
+                let capture = rebuilt
+                    .and_then(|()| headless.capture())
+                    .with_context(|| format!("{} --set {}", L::NAME, settings.join(" --set ")))?;
+                captures.push(capture);
+            }
+            Ok(captures)
         }
-        Ok(captures)
     }
-    match lesson {
-        "depth-test" => go::<depth_test::DepthTest>(each, adjust),
-        "stencil-basics" => go::<stencil_basics::StencilBasics>(each, adjust),
-        "mark-mirror" => go::<mark_mirror::MarkMirror>(each, adjust),
-        "reflect-skull" => go::<reflect_skull::ReflectSkull>(each, adjust),
-        "winding-fix" => go::<winding_fix::WindingFix>(each, adjust),
-        "transparent-mirror" => go::<transparent_mirror::TransparentMirror>(each, adjust),
-        "drawing-order" => go::<drawing_order::DrawingOrder>(each, adjust),
-        other => bail!("there is no lesson called `{other}`"),
+    for_lesson(lesson, Each(each, adjust))?
+}
+
+/// Films lesson `lesson` headless with these knob settings: every step's three buffers.
+pub fn film(
+    lesson: &str,
+    settings: &[&str],
+    adjust: impl FnOnce(&mut Request),
+) -> Result<Vec<Still>> {
+    struct Film<'a, A>(&'a [&'a str], A);
+    impl<A: FnOnce(&mut Request)> ForLesson for Film<'_, A> {
+        type Output = Result<Vec<Still>>;
+        fn run<L: Lesson>(self) -> Self::Output {
+            let mut request = Request::new::<L>(self.0)?;
+            (self.1)(&mut request);
+            Headless::<L>::new(&request)?.film()
+        }
     }
+    for_lesson(lesson, Film(settings, adjust))?
 }
 
 /// Compares `actual` with the reference `book/src/images/<name>.png`. On failure writes

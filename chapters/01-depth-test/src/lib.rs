@@ -5,13 +5,12 @@
 //! and the floor and wall are painted over the skull and the crate.
 
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Start, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states};
 
 pub struct DepthTest {
     /// The room's pipeline: the OPAQUE recipe with the depth state the knobs choose.
     draw_room: wgpu::RenderPipeline,
     near_first: bool,
-    show_depth: bool,
 }
 
 // ANCHOR: knobs
@@ -33,12 +32,6 @@ pub const KNOBS: &[Knob] = &[
         values: &["near-first", "far-first"],
         default: "near-first",
         meaning: "draw the skull and crate before the wall and floor, or after (the painter's order)",
-    },
-    Knob {
-        name: "view",
-        values: &["color", "depth"],
-        default: "color",
-        meaning: "show the colours, or the depth buffer (left raw, right linearised)",
     },
 ];
 // ANCHOR_END: knobs
@@ -64,37 +57,33 @@ impl Lesson for DepthTest {
         Ok(Self {
             draw_room: scene.pipeline(&gpu.device, &draw_room(knobs)),
             near_first: knobs.get("order") == "near-first",
-            show_depth: knobs.get("view") == "depth",
         })
     }
 
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1. Clear: colour to the sky, every depth to 1.0 (the far plane), stencil to 0.
-        let mut pass = frame.pass("room", Start::Cleared);
+        // Clear: colour to the sky, every depth to 1.0 (the far plane), stencil to 0.
+        frame.clear();
 
-        // 2. Draw the room with DRAW_ROOM. Near first is the order that shows what the depth test
-        //    does: with it on, the later, farther wall loses every pixel the skull already holds.
-        pass.set_pipeline(&self.draw_room);
+        // Draw the room with DRAW_ROOM, one object a step. Near first is the order that shows what
+        // the depth test does: with it on, the later, farther wall loses every pixel the skull
+        // already holds.
         let mut objects = [
-            &scene.skull,
-            &scene.crate_box,
-            &scene.mirror,
-            &scene.wall,
-            &scene.floor,
+            ("draw the skull", &scene.skull),
+            ("draw the crate", &scene.crate_box),
+            ("draw the mirror", &scene.mirror),
+            ("draw the wall", &scene.wall),
+            ("draw the floor", &scene.floor),
         ];
         if !self.near_first {
             objects.reverse();
         }
-        for object in objects {
-            object.draw(&mut pass);
-        }
-        drop(pass);
-
-        // 3. With view=depth, draw what the depth buffer holds instead of the colours.
-        if self.show_depth {
-            frame.show_depth();
+        for (step, object) in objects {
+            frame.step(step, |pass| {
+                pass.set_pipeline(&self.draw_room);
+                object.draw(pass);
+            });
         }
     }
     // ANCHOR_END: render

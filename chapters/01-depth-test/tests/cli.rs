@@ -26,11 +26,30 @@ fn screenshot_without_a_display_writes_a_1280x720_png() {
     assert_eq!((image.width(), image.height()), (1280, 720));
 }
 
+/// What every lesson binary is checked for: knobs, a screenshot, the frame's steps, the film, a
+/// window.
+#[test]
+fn the_binary_lists_renders_steps_films_and_opens_a_window() {
+    workbook::testing::check_lesson_binary(exe(), &scratch("common"));
+}
+
+#[test]
+fn steps_and_buffers_are_checked() {
+    run(exe(), &["--step", "0", "--screenshot", "x.png"]).assert_one_line_error("count from 1");
+    run(exe(), &["--step", "two", "--screenshot", "x.png"]).assert_one_line_error("step number");
+    run(exe(), &["--show", "blue", "--screenshot", "x.png"]).assert_one_line_error("stencil");
+    let file = scratch("a-file");
+    std::fs::write(&file, b"").unwrap();
+    let inside = file.join("film");
+    run(exe(), &["--film", inside.to_str().unwrap()])
+        .assert_one_line_error("cannot write the film");
+}
+
 #[test]
 fn knobs_are_listed_and_checked() {
     let listed = run(exe(), &["--list-knobs"]);
     listed.assert_clean_success();
-    for name in ["depth", "depth-write", "order", "view"] {
+    for name in ["depth", "depth-write", "order"] {
         assert!(
             listed.stdout.contains(&format!("] {name}:")),
             "{}",

@@ -7,7 +7,7 @@
 use workbook::glam::Vec2;
 use workbook::shapes::{self, Shape};
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Start, knobs, states, stencil};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states, stencil};
 
 pub struct StencilBasics {
     mark_shape: wgpu::RenderPipeline,
@@ -15,7 +15,6 @@ pub struct StencilBasics {
     porthole: Shape,
     bullseye: Shape,
     reference: u32,
-    show_stencil: bool,
 }
 
 // ANCHOR: knobs
@@ -62,12 +61,6 @@ pub const KNOBS: &[Knob] = &[
         default: "keep",
         meaning: "... where both tests pass",
     },
-    Knob {
-        name: "view",
-        values: &["color", "stencil"],
-        default: "color",
-        meaning: "show the colours, or the stencil buffer after the room is drawn (false colour)",
-    },
 ];
 // ANCHOR_END: knobs
 
@@ -106,45 +99,45 @@ impl Lesson for StencilBasics {
             porthole: Shape::disc(device, "porthole", Vec2::new(0.0, 0.0), 0.8),
             bullseye: Shape::disc(device, "bullseye", Vec2::new(0.0, 0.0), 0.35),
             reference: knobs::byte(knobs.get("reference")) as u32,
-            show_stencil: knobs.get("view") == "stencil",
         })
     }
 
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1. Clear colour, depth (to 1.0) and stencil (to 0).
-        let mut pass = frame.pass("stencil basics", Start::Cleared);
+        // Clear colour, depth (to 1.0) and stencil (to 0).
+        frame.clear();
 
-        // 2. Write the shapes into the stencil buffer with MARK_SHAPE (compare Always, pass op
-        //    Replace, no colour, no depth): the porthole with reference 1, then the bullseye
-        //    inside it with reference 2. The buffer now holds 0 outside, 1 in the ring, 2 inside.
-        pass.set_pipeline(&self.mark_shape);
-        pass.set_stencil_reference(1);
-        self.porthole.draw(&mut pass);
-        pass.set_stencil_reference(2);
-        self.bullseye.draw(&mut pass);
+        // Write the shapes into the stencil buffer with MARK_SHAPE (compare Always, pass op
+        // Replace, no colour, no depth): the porthole with reference 1, then the bullseye inside
+        // it with reference 2. The buffer then holds 0 outside, 1 in the ring, 2 inside.
+        frame.step("mark the porthole", |pass| {
+            pass.set_pipeline(&self.mark_shape);
+            pass.set_stencil_reference(1);
+            self.porthole.draw(pass);
+        });
+        frame.step("mark the bullseye", |pass| {
+            pass.set_pipeline(&self.mark_shape);
+            pass.set_stencil_reference(2);
+            self.bullseye.draw(pass);
+        });
 
-        // 3. Draw the room through the stencil with DRAW_THROUGH, the knobs' stencil state, and the
-        //    knobs' reference. Nearest first, so the wall behind the skull fails the depth test
-        //    (and gets the depth-fail operation).
-        pass.set_pipeline(&self.draw_through);
-        pass.set_stencil_reference(self.reference);
-        for object in [
-            &scene.skull,
-            &scene.crate_box,
-            &scene.mirror,
-            &scene.wall,
-            &scene.floor,
-        ] {
-            object.draw(&mut pass);
-        }
-        drop(pass);
-
-        // 4. With view=stencil, show what the stencil buffer holds now.
-        if self.show_stencil {
-            frame.show_stencil();
-        }
+        // Draw the room through the stencil with DRAW_THROUGH, the knobs' stencil state, and the
+        // knobs' reference. Nearest first, so the wall behind the skull fails the depth test (and
+        // gets the depth-fail operation).
+        frame.step("draw the room through the stencil", |pass| {
+            pass.set_pipeline(&self.draw_through);
+            pass.set_stencil_reference(self.reference);
+            for object in [
+                &scene.skull,
+                &scene.crate_box,
+                &scene.mirror,
+                &scene.wall,
+                &scene.floor,
+            ] {
+                object.draw(pass);
+            }
+        });
     }
     // ANCHOR_END: render
 }

@@ -5,29 +5,20 @@
 //! the depth test: that hole is what will stop the reflection being drawn over the crate.
 
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Start, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Show, knobs, states};
 
 pub struct MarkMirror {
     draw_room: wgpu::RenderPipeline,
     mark_mirror: wgpu::RenderPipeline,
-    show_stencil: bool,
 }
 
 // ANCHOR: knobs
-pub const KNOBS: &[Knob] = &[
-    Knob {
-        name: "mark-depth-test",
-        values: knobs::ON_OFF,
-        default: "on",
-        meaning: "whether MARK_MIRROR keeps the depth test, so the crate in front leaves a hole",
-    },
-    Knob {
-        name: "view",
-        values: &["stencil", "color"],
-        default: "stencil",
-        meaning: "show the stencil buffer in false colour (0 dark, 1 white), or the colours",
-    },
-];
+pub const KNOBS: &[Knob] = &[Knob {
+    name: "mark-depth-test",
+    values: knobs::ON_OFF,
+    default: "on",
+    meaning: "whether MARK_MIRROR keeps the depth test, so the crate in front leaves a hole",
+}];
 // ANCHOR_END: knobs
 
 // ANCHOR: recipes
@@ -49,38 +40,37 @@ impl Lesson for MarkMirror {
     const NAME: &'static str = "mark-mirror";
     const TITLE: &'static str = "Lesson 3: marking the mirror";
     const KNOBS: &'static [Knob] = KNOBS;
+    /// The mark is invisible in the colours: show the stencil buffer (0 dark, 1 white).
+    const SHOWS: Show = Show::Stencil;
 
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
         Ok(Self {
             draw_room: scene.pipeline(&gpu.device, &states::OPAQUE),
             mark_mirror: scene.pipeline(&gpu.device, &mark_mirror(knobs)),
-            show_stencil: knobs.get("view") == "stencil",
         })
     }
 
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1. Clear colour, depth (to 1.0) and stencil (to 0).
-        let mut pass = frame.pass("mark mirror", Start::Cleared);
+        // Clear colour, depth (to 1.0) and stencil (to 0).
+        frame.clear();
 
-        // 2. Draw the room as usual, all but the mirror: the crate and the skull now hold the depth
-        //    of everything in front of the mirror.
-        pass.set_pipeline(&self.draw_room);
-        scene.draw_room(&mut pass);
+        // Draw the room as usual, all but the mirror: the crate and the skull now hold the depth
+        // of everything in front of the mirror.
+        frame.step("draw the room", |pass| {
+            pass.set_pipeline(&self.draw_room);
+            scene.draw_room(pass);
+        });
 
-        // 3. Mark the mirror: MARK_MIRROR writes the reference, 1, into the stencil buffer wherever a
-        //    mirror fragment passes the depth test. It writes no colour, so the mirror's pixels still
-        //    show the sky behind it.
-        pass.set_pipeline(&self.mark_mirror);
-        pass.set_stencil_reference(1);
-        scene.mirror.draw(&mut pass);
-        drop(pass);
-
-        // 4. With view=stencil, show what the stencil buffer now holds.
-        if self.show_stencil {
-            frame.show_stencil();
-        }
+        // Mark the mirror: MARK_MIRROR writes the reference, 1, into the stencil buffer wherever a
+        // mirror fragment passes the depth test. It writes no colour, so the mirror's pixels still
+        // show the sky behind it.
+        frame.step("mark the mirror", |pass| {
+            pass.set_pipeline(&self.mark_mirror);
+            pass.set_stencil_reference(1);
+            scene.mirror.draw(pass);
+        });
     }
     // ANCHOR_END: render
 }

@@ -62,20 +62,22 @@ impl Lesson for ReflectSkull {
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1-3. Clear, draw the room but the mirror, mark the mirror's visible pixels with 1
-        //      (lesson 3's frame, kept in the framework as MarkedRoom).
-        let mut pass = self.marked_room.begin(frame, "reflect skull");
+        // Clear, draw the room but the mirror, mark the mirror's visible pixels with 1 (lesson 3's
+        // frame, kept in the framework as MarkedRoom).
+        self.marked_room.steps(frame);
 
-        // 4. Draw the skull again, reflected in the mirror's plane (world matrix R * world) and lit
-        //    by the reflected lights, with DRAW_REFLECTION: only where the stencil equals the
-        //    reference, 1. Its triangles now wind the other way on screen, and this recipe still
-        //    culls "back" faces by the usual rule — the skull shows its inside (lesson 5).
-        pass.set_pipeline(&self.draw_reflection);
-        pass.set_stencil_reference(1);
-        if self.reflect_lights {
-            scene.bind_reflected_frame(&mut pass);
-        }
-        scene.skull.draw_reflected(&mut pass);
+        // Draw the skull again, reflected in the mirror's plane (world matrix R * world) and lit by
+        // the reflected lights, with DRAW_REFLECTION: only where the stencil equals the reference,
+        // 1. Its triangles now wind the other way on screen, and this recipe still culls "back"
+        // faces by the usual rule — the skull shows its inside (lesson 5).
+        frame.step("draw the reflected skull", |pass| {
+            pass.set_pipeline(&self.draw_reflection);
+            pass.set_stencil_reference(1);
+            if self.reflect_lights {
+                scene.bind_reflected_frame(pass);
+            }
+            scene.skull.draw_reflected(pass);
+        });
     }
     // ANCHOR_END: render
 }

@@ -62,14 +62,17 @@ impl Lesson for WindingFix {
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1-3. Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
-        let mut pass = self.marked_room.begin(frame, "winding fix");
+        // Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
+        self.marked_room.steps(frame);
 
-        // 4. Draw the reflected skull where the stencil is 1 (lesson 4), now with CULL_CLOCKWISE:
-        //    the triangles the reflection turned clockwise are the ones facing the camera.
-        pass.set_pipeline(&self.draw_reflection);
-        scene.bind_reflected_frame(&mut pass);
-        scene.skull.draw_reflected(&mut pass);
+        // Draw the reflected skull where the stencil is 1 (lesson 4), now with CULL_CLOCKWISE: the
+        // triangles the reflection turned clockwise are the ones facing the camera.
+        frame.step("draw the reflected skull", |pass| {
+            pass.set_pipeline(&self.draw_reflection);
+            pass.set_stencil_reference(1);
+            scene.bind_reflected_frame(pass);
+            scene.skull.draw_reflected(pass);
+        });
     }
     // ANCHOR_END: render
 }

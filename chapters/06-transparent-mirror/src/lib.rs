@@ -63,19 +63,24 @@ impl Lesson for TransparentMirror {
     // ANCHOR: render
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        // 1-3. Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
-        let mut pass = self.marked_room.begin(frame, "transparent mirror");
+        // Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
+        self.marked_room.steps(frame);
 
-        // 4. Draw the reflected skull where the stencil is 1, right side out (lessons 4 and 5).
-        pass.set_pipeline(&self.draw_reflection);
-        scene.bind_reflected_frame(&mut pass);
-        scene.skull.draw_reflected(&mut pass);
+        // Draw the reflected skull where the stencil is 1, right side out (lessons 4 and 5).
+        frame.step("draw the reflected skull", |pass| {
+            pass.set_pipeline(&self.draw_reflection);
+            pass.set_stencil_reference(1);
+            scene.bind_reflected_frame(pass);
+            scene.skull.draw_reflected(pass);
+        });
 
-        // 5. Draw the mirror itself, last, with TRANSPARENT: its colour mixed over the reflection,
-        //    a·Cmirror + (1 − a)·Creflection. The depth test keeps it behind the crate and the skull.
-        pass.set_pipeline(&self.draw_mirror);
-        scene.bind_frame(&mut pass);
-        scene.mirror.draw(&mut pass);
+        // Draw the mirror's glass itself, last, with TRANSPARENT: its colour mixed over the
+        // reflection, a·Cmirror + (1 − a)·Creflection. The depth test keeps it behind the crate
+        // and the skull.
+        frame.step("draw the glass", |pass| {
+            pass.set_pipeline(&self.draw_mirror);
+            scene.mirror.draw(pass);
+        });
     }
     // ANCHOR_END: render
 }

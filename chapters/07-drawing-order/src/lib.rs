@@ -6,7 +6,7 @@
 
 use workbook::glam::Vec3;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, Start, scene::Drawable, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, scene::Drawable, states};
 
 pub struct DrawingOrder {
     draw_opaque: wgpu::RenderPipeline,
@@ -56,27 +56,28 @@ impl Lesson for DrawingOrder {
             transparent: farthest_first(frame, transparent, Drawable::reflected_centre),
         };
         let transparent = farthest_first(frame, transparent, Drawable::centre);
-        let mut pass = frame.pass("drawing order", Start::Cleared);
+        frame.clear();
 
         if self.mirror_first {
-            // 1. Mark the mirror in the stencil buffer (nothing is drawn yet: all of it is marked).
-            self.mark_mirror(&mut pass, scene);
-            // 2. The mirror's world, opaque objects first, where the stencil is 1.
-            // 3. Then its transparent objects, then the transparent mirror over all of it.
-            self.draw_reflected_world(&mut pass, scene, &mirrored);
-            // 4. The room's opaque objects: the depth test puts the crate and the skull in front
-            //    of the mirror's world, where they belong.
-            self.draw_opaque(&mut pass, scene, &opaque);
-            // 5. The room's transparent objects, farthest first.
-            self.draw_transparent(&mut pass, &transparent);
+            // MKXJun's five steps. Mark the mirror in the stencil buffer (nothing is drawn yet:
+            // all of it is marked).
+            self.mark_mirror(frame);
+            // The mirror's world where the stencil is 1: its opaque objects, then its transparent
+            // ones, then the transparent mirror over all of it.
+            self.draw_reflected_world(frame, &mirrored);
+            // The room's opaque objects: the depth test puts the crate and the skull in front of
+            // the mirror's world, where they belong.
+            self.draw_opaque(frame, &opaque);
+            // The room's transparent objects, farthest first.
+            self.draw_transparent(frame, &transparent);
         } else {
             // order=luna: the room first, transparent objects included (they write depth) ...
-            self.draw_opaque(&mut pass, scene, &opaque);
-            self.draw_transparent(&mut pass, &transparent);
+            self.draw_opaque(frame, &opaque);
+            self.draw_transparent(frame, &transparent);
             // ... then the mirror: its mark fails wherever a transparent object wrote a nearer
             // depth, and there the mirror's world is never drawn.
-            self.mark_mirror(&mut pass, scene);
-            self.draw_reflected_world(&mut pass, scene, &mirrored);
+            self.mark_mirror(frame);
+            self.draw_reflected_world(frame, &mirrored);
         }
     }
     // ANCHOR_END: render
@@ -85,47 +86,57 @@ impl Lesson for DrawingOrder {
 // ANCHOR: steps
 impl DrawingOrder {
     /// MARK_MIRROR: 1 into the stencil wherever the mirror passes the depth test.
-    fn mark_mirror(&self, pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
-        pass.set_pipeline(&self.mark_mirror);
-        pass.set_stencil_reference(1);
-        scene.mirror.draw(pass);
+    fn mark_mirror(&self, frame: &mut Frame<'_>) {
+        let scene = frame.scene;
+        frame.step("mark the mirror", |pass| {
+            pass.set_pipeline(&self.mark_mirror);
+            pass.set_stencil_reference(1);
+            scene.mirror.draw(pass);
+        });
     }
 
     /// The mirror images where the stencil holds 1 — opaque, then transparent — lit by reflected
     /// lights, and the mirror's glass blended over them.
-    fn draw_reflected_world(
-        &self,
-        pass: &mut wgpu::RenderPass<'_>,
-        scene: &Scene,
-        world: &MirrorWorld<'_>,
-    ) {
-        scene.bind_reflected_frame(pass);
-        pass.set_pipeline(&self.draw_reflection);
-        for object in world.opaque {
-            object.draw_reflected(pass);
-        }
-        pass.set_pipeline(&self.draw_reflected_transparent);
-        for object in world.transparent {
-            object.draw_reflected(pass);
-        }
-        scene.bind_frame(pass);
-        pass.set_pipeline(&self.draw_mirror);
-        scene.mirror.draw(pass);
+    fn draw_reflected_world(&self, frame: &mut Frame<'_>, world: &MirrorWorld<'_>) {
+        let scene = frame.scene;
+        frame.step("reflect the opaque objects", |pass| {
+            scene.bind_reflected_frame(pass);
+            pass.set_pipeline(&self.draw_reflection);
+            pass.set_stencil_reference(1);
+            for object in world.opaque {
+                object.draw_reflected(pass);
+            }
+        });
+        frame.step("reflect the transparent objects", |pass| {
+            scene.bind_reflected_frame(pass);
+            pass.set_pipeline(&self.draw_reflected_transparent);
+            pass.set_stencil_reference(1);
+            for object in world.transparent {
+                object.draw_reflected(pass);
+            }
+        });
+        frame.step("draw the glass", |pass| {
+            pass.set_pipeline(&self.draw_mirror);
+            scene.mirror.draw(pass);
+        });
     }
 
-    fn draw_opaque(&self, pass: &mut wgpu::RenderPass<'_>, scene: &Scene, opaque: &[&Drawable]) {
-        scene.bind_frame(pass);
-        pass.set_pipeline(&self.draw_opaque);
-        for object in opaque {
-            object.draw(pass);
-        }
+    fn draw_opaque(&self, frame: &mut Frame<'_>, opaque: &[&Drawable]) {
+        frame.step("draw the opaque objects", |pass| {
+            pass.set_pipeline(&self.draw_opaque);
+            for object in opaque {
+                object.draw(pass);
+            }
+        });
     }
 
-    fn draw_transparent(&self, pass: &mut wgpu::RenderPass<'_>, transparent: &[&Drawable]) {
-        pass.set_pipeline(&self.draw_transparent);
-        for object in transparent {
-            object.draw(pass);
-        }
+    fn draw_transparent(&self, frame: &mut Frame<'_>, transparent: &[&Drawable]) {
+        frame.step("draw the transparent objects", |pass| {
+            pass.set_pipeline(&self.draw_transparent);
+            for object in transparent {
+                object.draw(pass);
+            }
+        });
     }
 }
 // ANCHOR_END: steps

@@ -1,5 +1,5 @@
-// view=depth: the depth buffer drawn as grey levels. Left half: the raw values wgpu stores (0 at the
-// near plane, 1 at the far plane). Right half: the same values linearised back to distances.
+// --show depth and --show raw-depth: the depth buffer drawn as grey levels, either linearised back to
+// distances (black at the near plane, white at the far plane) or as the raw values wgpu stores.
 
 struct Planes {
     near: f32,
@@ -27,18 +27,14 @@ fn linearise(d: f32) -> f32 {
 
 @fragment
 fn fs_depth(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
-    let size = textureDimensions(depth_buffer);
-    let pixel = vec2<i32>(position.xy);
-    let d = textureLoad(depth_buffer, pixel, 0);
-    let middle = i32(size.x / 2u);
-    if abs(pixel.x - middle) < 2 {
-        return vec4<f32>(0.9, 0.3, 0.1, 1.0); // the divider
-    }
-    var grey = d;
-    if pixel.x > middle {
-        grey = linearise(d);
-    }
-    return vec4<f32>(vec3<f32>(grey), 1.0);
+    let d = textureLoad(depth_buffer, vec2<i32>(position.xy), 0);
+    return vec4<f32>(vec3<f32>(linearise(d)), 1.0);
+}
+
+@fragment
+fn fs_raw_depth(@builtin(position) position: vec4<f32>) -> @location(0) vec4<f32> {
+    let d = textureLoad(depth_buffer, vec2<i32>(position.xy), 0);
+    return vec4<f32>(vec3<f32>(d), 1.0);
 }
 
 // Depth readback for tests: the depth buffer copied into an R32Float colour target.

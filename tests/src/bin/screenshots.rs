@@ -1,38 +1,76 @@
-//! `cargo screenshots [NAME...]`: renders the book's screenshots (all, or those named) into
-//! `book/src/images/`. These files are also the tests' references, so run this only on purpose: when a
+//! `cargo screenshots [NAME...]`: renders the book's images into `book/src/images/` — the
+//! screenshots, the enlarged crop and difference image of each wrong/right pair, and each lesson's
+//! step strip. These files are also the tests' references, so run this only on purpose: when a
 //! picture is meant to change, look at the new one, and say why in the commit.
+//!
+//! A NAME is a screenshot's name, or a lesson's (all of that lesson's images); none means all.
 
 use std::process::ExitCode;
 
-use workbook_tests::shots::SHOTS;
+use anyhow::Result;
+use workbook_tests::shots::{LESSONS, PAIRS, SHOTS};
+use workbook_tests::strips;
 
 fn main() -> ExitCode {
     workbook::cli::quiet_mesa();
     let names: Vec<String> = std::env::args().skip(1).collect();
-    if let Some(unknown) = names.iter().find(|n| !SHOTS.iter().any(|s| s.name == *n)) {
-        let known: Vec<_> = SHOTS.iter().map(|s| s.name).collect();
+    let known = |name: &str| SHOTS.iter().any(|s| s.name == name) || LESSONS.contains(&name);
+    if let Some(unknown) = names.iter().find(|n| !known(n)) {
+        let shots: Vec<_> = SHOTS.iter().map(|s| s.name).collect();
         eprintln!(
-            "screenshots: error: no screenshot called `{unknown}`; there are: {}",
-            known.join(", ")
+            "screenshots: error: no screenshot or lesson called `{unknown}`; the lessons are {}, \
+             the screenshots {}",
+            LESSONS.join(", "),
+            shots.join(", ")
         );
         return ExitCode::FAILURE;
     }
-    let _ = std::fs::create_dir_all(workbook_tests::images());
-    for shot in SHOTS {
-        if !names.is_empty() && !names.iter().any(|n| n == shot.name) {
-            continue;
-        }
-        let result = shot.render().and_then(|image| {
-            workbook::cli::save_png(&image, &shot.path())?;
-            Ok(())
-        });
-        match result {
-            Ok(()) => println!("wrote {}   ({})", shot.path().display(), shot.command()),
-            Err(error) => {
-                eprintln!("screenshots: error: {}: {error:#}", shot.name);
-                return ExitCode::FAILURE;
-            }
+    let wanted = |name: &str, lesson: &str| {
+        names.is_empty() || names.iter().any(|n| n == name || n == lesson)
+    };
+    match write(&wanted) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("screenshots: error: {error:#}");
+            ExitCode::FAILURE
         }
     }
-    ExitCode::SUCCESS
+}
+
+fn write(wanted: &dyn Fn(&str, &str) -> bool) -> Result<()> {
+    let images = workbook_tests::images();
+    std::fs::create_dir_all(&images)?;
+    let save = |image: &image::RgbaImage, name: &str| {
+        let path = images.join(format!("{name}.png"));
+        workbook::cli::save_png(image, &path)?;
+        anyhow::Ok(path)
+    };
+    for shot in SHOTS.iter().filter(|s| wanted(s.name, s.lesson)) {
+        let path = save(&shot.render()?, shot.name)?;
+        println!("wrote {}   ({})", path.display(), shot.command());
+    }
+    for pair in PAIRS {
+        let lesson = workbook_tests::shots::Shot::named(pair.wrong)?.lesson;
+        if !(wanted(pair.wrong, lesson) || wanted(pair.right, lesson)) {
+            continue;
+        }
+        let made = pair.make()?;
+        save(&made.zoom, &pair.zoom_name())?;
+        let path = save(&made.difference, &pair.difference_name())?;
+        println!(
+            "wrote {} and its zoom   (crop {:?}, {:.0}% of the visibly different pixels)",
+            path.display(),
+            made.rect,
+            made.coverage * 100.0
+        );
+    }
+    for lesson in LESSONS.iter().filter(|l| wanted("", l)) {
+        let files = strips::write(lesson)?;
+        println!(
+            "wrote {} ({} files)",
+            strips::dir(lesson).display(),
+            files.len()
+        );
+    }
+    Ok(())
 }

@@ -12,6 +12,7 @@ mod mark_mirror;
 mod reflect_skull;
 mod screenshots;
 mod stencil_basics;
+mod steps;
 mod transparent_mirror;
 mod truth_table;
 mod validation;

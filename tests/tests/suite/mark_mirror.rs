@@ -2,6 +2,7 @@
 //! camera: 1 where the mirror is seen, 0 on the wall and floor, 0 where the crate hides the mirror.
 
 use glam::Vec3;
+use workbook::Stop;
 use workbook::camera::BOOK_POSE;
 use workbook::headless::Capture;
 use workbook::scene::{CRATE_CENTRE, CRATE_SIZE, MIRROR_MAX, MIRROR_MIN, SKULL_CENTRE, SKULL_SIZE};
@@ -39,9 +40,14 @@ fn seen(x: u32, y: u32) -> Seen {
 }
 
 fn render(settings: &[&str]) -> Capture {
+    render_until(settings, Stop::Last)
+}
+
+fn render_until(settings: &[&str], stop: Stop) -> Capture {
     shots::render("mark-mirror", settings, |request| {
         (request.width, request.height) = (VIEW.width, VIEW.height);
         request.read_stencil = true;
+        request.stop = stop;
     })
     .unwrap()
 }
@@ -76,6 +82,16 @@ fn the_mark_is_the_visible_mirror_with_a_hole_for_the_crate() {
         under_crate > 300,
         "only {under_crate} pixels where the crate hides the mirror"
     );
+}
+
+/// Step by step: after "draw the room" (step 2) the stencil buffer is still all 0; after "mark the
+/// mirror" (step 3) it holds the mark.
+#[test]
+fn the_mark_is_made_by_the_step_that_marks_the_mirror() {
+    let room = render_until(&[], Stop::After(2));
+    assert!(room.stencil.as_ref().unwrap().iter().all(|&v| v == 0));
+    let [mirror, _, _] = check(&render_until(&[], Stop::After(3)), 0);
+    assert!(mirror > 3000, "only {mirror} mirror pixels");
 }
 
 #[test]

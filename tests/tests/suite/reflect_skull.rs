@@ -2,6 +2,7 @@
 //! hides it behind the wall; from behind the wall only the stencil test keeps it away (Luna's
 //! figure 10.1).
 
+use workbook::Stop;
 use workbook::camera::Camera;
 use workbook::headless::Capture;
 use workbook::scene::{CLEAR_SRGB, SKULL_CENTRE, SKULL_SIZE, mirror_reflection};
@@ -12,12 +13,45 @@ const W: u32 = 320;
 const H: u32 = 180;
 
 fn render(settings: &[&str], camera: Camera) -> Capture {
+    render_until(settings, camera, Stop::Last)
+}
+
+fn render_until(settings: &[&str], camera: Camera, stop: Stop) -> Capture {
     shots::render("reflect-skull", settings, |request| {
         (request.width, request.height) = (W, H);
         request.camera = camera;
         request.read_stencil = true;
+        request.stop = stop;
     })
     .unwrap()
+}
+
+/// Luna's figure 10.4, step by step: drawing the reflected skull (step 4) leaves the stencil buffer
+/// as the mark made it (step 3), and changes colours only where the mark holds 1.
+#[test]
+fn the_reflection_step_reads_the_mark_and_changes_only_the_marked_pixels() {
+    let camera = Camera::default();
+    let marked = render_until(&[], camera, Stop::After(3));
+    let reflected = render_until(&[], camera, Stop::After(4));
+    assert_eq!(
+        marked.stencil, reflected.stencil,
+        "the reflection changed the stencil"
+    );
+    let mut changed = 0;
+    for (x, y, pixel) in reflected.color.enumerate_pixels() {
+        if pixel != marked.color.get_pixel(x, y) {
+            assert_eq!(
+                marked.stencil_at(x, y),
+                Some(1),
+                "({x}, {y}) changed outside the mark"
+            );
+            changed += 1;
+        }
+    }
+    assert!(
+        changed > 100,
+        "the reflection changed only {changed} pixels"
+    );
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! headless render in the process shares one device.
 
 use workbook::headless::{self, Request};
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, Start, states, wgpu};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, states, wgpu};
 
 /// A lesson with a bug: it draws without binding the object's bind group or vertex buffer.
 struct Broken(wgpu::RenderPipeline);
@@ -17,9 +17,11 @@ impl Lesson for Broken {
     }
 
     fn render(&self, frame: &mut Frame<'_>) {
-        let mut pass = frame.pass("broken", Start::Cleared);
-        pass.set_pipeline(&self.0);
-        pass.draw(0..3, 0..1);
+        frame.clear();
+        frame.step("draw without a vertex buffer", |pass| {
+            pass.set_pipeline(&self.0);
+            pass.draw(0..3, 0..1);
+        });
     }
 }
 

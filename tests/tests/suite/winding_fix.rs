@@ -6,7 +6,7 @@
 use image::imageops;
 use workbook::camera::Camera;
 use workbook::headless::{self, Request};
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Start, states, wgpu};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, states, wgpu};
 use workbook_tests::flip::{self, Threshold};
 
 /// The skull's mirror image alone, drawn with lesson 5's reflected recipe for its `winding-fix`
@@ -28,10 +28,12 @@ impl Lesson for ReflectedSkullAlone {
 
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        let mut pass = frame.pass("reflected skull alone", Start::Cleared);
-        pass.set_pipeline(&self.0);
-        scene.bind_reflected_frame(&mut pass);
-        scene.skull.draw_reflected(&mut pass);
+        frame.clear();
+        frame.step("draw the reflected skull", |pass| {
+            pass.set_pipeline(&self.0);
+            scene.bind_reflected_frame(pass);
+            scene.skull.draw_reflected(pass);
+        });
     }
 }
 
@@ -49,9 +51,11 @@ impl Lesson for SkullAlone {
 
     fn render(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
-        let mut pass = frame.pass("skull alone", Start::Cleared);
-        pass.set_pipeline(&self.0);
-        scene.skull.draw(&mut pass);
+        frame.clear();
+        frame.step("draw the skull", |pass| {
+            pass.set_pipeline(&self.0);
+            scene.skull.draw(pass);
+        });
     }
 }
 

@@ -1,0 +1,137 @@
+//! Every lesson's frame is a list of named steps: filmed step by step it ends in the full picture,
+//! begins with the cleared buffers, and no step is empty. The book's strips are those films, and
+//! each wrong picture's enlarged crop holds the place where it differs from the right one.
+
+use image::Rgba;
+use workbook::Show;
+use workbook::scene::CLEAR_SRGB;
+use workbook::views::stencil_colour;
+use workbook_tests::shots::{self, LESSONS, PAIRS, STRICT};
+use workbook_tests::strips;
+
+const SIZE: (u32, u32) = (160, 90);
+
+#[test]
+fn every_frame_goes_from_cleared_buffers_to_the_full_picture_with_no_empty_step() {
+    for lesson in LESSONS {
+        let film = shots::film(lesson, &[], |r| (r.width, r.height) = SIZE).unwrap();
+        let full = shots::render(lesson, &[], |r| {
+            (r.width, r.height) = SIZE;
+            r.show = Show::Color;
+        })
+        .unwrap();
+        assert!(film.len() >= 2, "{lesson} has {} steps", film.len());
+
+        // The first step clears: the sky everywhere, every depth at the far plane (white), every
+        // stencil value 0.
+        let first = &film[0];
+        assert_eq!(first.step, "clear", "{lesson}");
+        let sky = Rgba([CLEAR_SRGB[0], CLEAR_SRGB[1], CLEAR_SRGB[2], 255]);
+        let [r, g, b] = stencil_colour(0);
+        let zero = Rgba([r, g, b, 255]);
+        assert!(
+            first.color.pixels().all(|p| *p == sky),
+            "{lesson}: not cleared"
+        );
+        assert!(
+            first.depth.pixels().all(|p| *p == Rgba([255; 4])),
+            "{lesson}: depth"
+        );
+        assert!(
+            first.stencil.pixels().all(|p| *p == zero),
+            "{lesson}: stencil"
+        );
+
+        // The last step's colours are the frame's, exactly.
+        let last = film.last().unwrap();
+        assert!(
+            last.color == full.color,
+            "{lesson}: the last step is not the full frame"
+        );
+
+        // Every step changes at least one of the three buffers.
+        for pair in film.windows(2) {
+            let changed = Show::BUFFERS
+                .iter()
+                .any(|&show| pair[0].image(show) != pair[1].image(show));
+            assert!(changed, "{lesson}: step `{}` changes nothing", pair[1].step);
+        }
+    }
+}
+
+/// The strips on the lesson pages are the lessons' films now: every image matches by FLIP, no image
+/// is missing or left over, and the captions are the steps' names as the lesson's code gives them.
+#[test]
+fn the_book_strips_are_the_lessons_films() {
+    let mut failures = Vec::new();
+    for lesson in LESSONS {
+        let film = strips::film(lesson).unwrap();
+        let html = std::fs::read_to_string(strips::html_path(lesson)).unwrap_or_default();
+        // The captions are the names `--list-steps` prints, from the same function.
+        let names: Vec<&str> = film.iter().map(|still| still.step).collect();
+        let listed = workbook::steps::describe(&names);
+        assert_eq!(
+            workbook::testing::strip_captions(&strips::html(lesson, &film)),
+            listed
+        );
+        if html != strips::html(lesson, &film) {
+            failures.push(format!(
+                "{}: not the strip of the lesson's steps; remake it with `cargo screenshots {lesson}`",
+                strips::html_path(lesson).display()
+            ));
+        }
+        let mut expected = vec!["strip.html".to_string()];
+        for (index, still) in film.iter().enumerate() {
+            for show in Show::BUFFERS {
+                let file = workbook::steps::film_file(index + 1, still.step, show);
+                let name = format!("steps/{lesson}/{}", file.trim_end_matches(".png"));
+                if let Err(error) = shots::check_image(&name, still.image(show), STRICT) {
+                    failures.push(format!("{error:#}"));
+                }
+                expected.push(file);
+            }
+        }
+        let mut found: Vec<String> = std::fs::read_dir(strips::dir(lesson))
+            .map(|entries| {
+                let names = entries.flatten();
+                names
+                    .map(|e| e.file_name().to_string_lossy().into_owned())
+                    .collect()
+            })
+            .unwrap_or_default();
+        found.sort();
+        expected.sort();
+        if found != expected {
+            failures.push(format!(
+                "{lesson}: the strip's files are {found:?}, not {expected:?}"
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
+}
+
+/// Each wrong picture's zoom and difference image are remade the same, and the crop, placed from
+/// the FLIP map alone, holds at least 80% of the pixels that differ visibly.
+#[test]
+fn every_wrong_picture_has_its_crop_where_it_differs() {
+    let mut failures = Vec::new();
+    for pair in PAIRS {
+        let made = pair.make().unwrap();
+        assert!(
+            made.coverage >= 0.8,
+            "{}: the crop {:?} holds only {:.0}% of the visibly different pixels",
+            pair.wrong,
+            made.rect,
+            made.coverage * 100.0
+        );
+        for (name, image) in [
+            (pair.zoom_name(), &made.zoom),
+            (pair.difference_name(), &made.difference),
+        ] {
+            if let Err(error) = shots::check_image(&name, image, STRICT) {
+                failures.push(format!("{error:#}"));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "\n{}", failures.join("\n"));
+}
