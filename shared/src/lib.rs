@@ -1,36 +1,28 @@
 //! The framework of the Mirror & Stencil Workbook.
 //!
-//! Everything that is not a lesson lives here once: GPU setup, the window and headless runners, the
-//! one command line, the room of Luna's Mirror demo, meshes and textures, and the named pipeline
-//! recipes. A lesson implements [`Lesson`] and its `main` is `workbook::main::<TheLesson>()`.
+//! Everything that is not a lesson lives here once, in four parts and the lesson contract:
+//!
+//! - [`lesson`]: the trait a chapter implements, its frame of named steps, its knobs;
+//! - [`app`]: the command line, the window and headless runners;
+//! - [`gpu`]: device setup, the named pipeline recipes, the buffer views;
+//! - [`room`]: the scene of Luna's Mirror demo, meshes, textures, the camera;
+//! - [`math`]: the reflection matrix and the stencil model, on the CPU.
+//!
+//! A lesson implements [`Lesson`] and its `main` is `workbook::main::<TheLesson>()`.
 
-pub mod camera;
-pub mod cli;
+pub mod app;
 pub mod gpu;
-pub mod headless;
-pub mod knobs;
 pub mod lesson;
-pub mod mesh;
-pub mod mirror;
-pub mod reflect;
-pub mod runner;
-pub mod scene;
-pub mod shapes;
-pub mod states;
-pub mod stencil;
-pub mod steps;
-pub mod testing;
-pub mod texture;
-pub mod views;
-pub mod window;
+pub mod math;
+pub mod room;
 
-pub use cli::main;
+pub use app::cli::main;
 pub use gpu::Gpu;
-pub use knobs::{Knob, Knobs};
+pub use gpu::states::Recipe;
+pub use lesson::knobs::{Knob, Knobs};
+pub use lesson::steps::{Show, Stop};
 pub use lesson::{Frame, Lesson};
-pub use scene::Scene;
-pub use states::Recipe;
-pub use steps::{Show, Stop};
+pub use room::scene::Scene;
 
 pub use glam;
 pub use wgpu;

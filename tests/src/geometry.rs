@@ -2,7 +2,7 @@
 //! room's dimensions alone — never from a render.
 
 use glam::{Mat4, Vec3, Vec4Swizzles};
-use workbook::camera::Camera;
+use workbook::room::camera::Camera;
 
 /// A camera looking at a target of a given size in pixels.
 #[derive(Debug, Clone, Copy)]

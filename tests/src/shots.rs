@@ -6,8 +6,8 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
-use workbook::camera::Camera;
-use workbook::headless::{Capture, Headless, Request, Still};
+use workbook::app::headless::{Capture, Headless, Request, Still};
+use workbook::room::camera::Camera;
 use workbook::{Knobs, Lesson, Show};
 
 use crate::flip::{self, Threshold};

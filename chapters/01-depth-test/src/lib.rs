@@ -5,7 +5,7 @@
 //! and the floor and wall are painted over the skull and the crate.
 
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, lesson::knobs};
 
 pub struct DepthTest {
     /// The room's pipeline: the OPAQUE recipe with the depth state the knobs choose.

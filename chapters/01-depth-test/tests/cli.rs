@@ -3,7 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
-use workbook::testing::{run, run_with};
+use workbook::app::testing::{run, run_with};
 
 const EXE: &str = env!("CARGO_BIN_EXE_depth-test");
 
@@ -30,7 +30,7 @@ fn screenshot_without_a_display_writes_a_1280x720_png() {
 /// window.
 #[test]
 fn the_binary_lists_renders_steps_films_and_opens_a_window() {
-    workbook::testing::check_lesson_binary(exe(), &scratch("common"));
+    workbook::app::testing::check_lesson_binary(exe(), &scratch("common"));
 }
 
 #[test]

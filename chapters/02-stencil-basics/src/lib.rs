@@ -5,9 +5,11 @@
 //! `(reference & read_mask) CMP (stored & read_mask)` decides, the operations update the buffer.
 
 use workbook::glam::Vec2;
-use workbook::shapes::{self, Shape};
+use workbook::room::shapes::{self, Shape};
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states, stencil};
+use workbook::{
+    Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, lesson::knobs, math::stencil,
+};
 
 pub struct StencilBasics {
     mark_shape: wgpu::RenderPipeline,

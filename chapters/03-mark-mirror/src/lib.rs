@@ -5,7 +5,7 @@
 //! the depth test: that hole is what will stop the reflection being drawn over the crate.
 
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Show, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Show, gpu::states, lesson::knobs};
 
 pub struct MarkMirror {
     draw_room: wgpu::RenderPipeline,

@@ -4,9 +4,9 @@
 //! reflected lights, only where lesson 3's mark holds 1. This lesson keeps the usual front face, so
 //! the reflection comes out inside out: lesson 5 fixes that.
 
-use workbook::mirror::MarkedRoom;
+use workbook::lesson::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, lesson::knobs};
 
 pub struct ReflectSkull {
     marked_room: MarkedRoom,

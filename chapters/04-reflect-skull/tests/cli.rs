@@ -2,7 +2,7 @@
 
 #[test]
 fn the_binary_lists_renders_refuses_and_opens_a_window() {
-    workbook::testing::check_lesson_binary(
+    workbook::app::testing::check_lesson_binary(
         std::path::Path::new(env!("CARGO_BIN_EXE_reflect-skull")),
         &std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("reflect-skull-cli"),
     );

@@ -4,9 +4,9 @@
 //! reflected pass tells the rasterizer that clockwise is the front (CULL_CLOCKWISE), and the mirror
 //! shows the skull's outside again.
 
-use workbook::mirror::MarkedRoom;
+use workbook::lesson::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states};
 
 pub struct WindingFix {
     marked_room: MarkedRoom,

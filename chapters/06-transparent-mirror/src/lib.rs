@@ -3,9 +3,9 @@
 //! A real mirror is glass: its own colour over what it reflects. The mirror is drawn last, blended
 //! over the reflection with its material's alpha a: C = a·Cmirror + (1 − a)·Creflection.
 
-use workbook::mirror::MarkedRoom;
+use workbook::lesson::mirror::MarkedRoom;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, knobs, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, lesson::knobs};
 
 pub struct TransparentMirror {
     marked_room: MarkedRoom,

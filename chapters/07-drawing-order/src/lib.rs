@@ -6,7 +6,7 @@
 
 use workbook::glam::Vec3;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, scene::Drawable, states};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, gpu::states, room::scene::Drawable};
 
 pub struct DrawingOrder {
     draw_opaque: wgpu::RenderPipeline,

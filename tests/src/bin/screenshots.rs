@@ -12,7 +12,7 @@ use workbook_tests::shots::{LESSONS, PAIRS, SHOTS};
 use workbook_tests::strips;
 
 fn main() -> ExitCode {
-    workbook::cli::quiet_mesa();
+    workbook::app::cli::quiet_mesa();
     let names: Vec<String> = std::env::args().skip(1).collect();
     let known = |name: &str| SHOTS.iter().any(|s| s.name == name) || LESSONS.contains(&name);
     if let Some(unknown) = names.iter().find(|n| !known(n)) {
@@ -42,7 +42,7 @@ fn write(wanted: &dyn Fn(&str, &str) -> bool) -> Result<()> {
     std::fs::create_dir_all(&images)?;
     let save = |image: &image::RgbaImage, name: &str| {
         let path = images.join(format!("{name}.png"));
-        workbook::cli::save_png(image, &path)?;
+        workbook::app::cli::save_png(image, &path)?;
         anyhow::Ok(path)
     };
     for shot in SHOTS.iter().filter(|s| wanted(s.name, s.lesson)) {

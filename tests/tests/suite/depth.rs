@@ -3,9 +3,9 @@
 //! through the pixel, intersect the plane, project the point.
 
 use glam::Vec3;
-use workbook::camera::BOOK_POSE;
-use workbook::headless::Capture;
-use workbook::scene::{
+use workbook::app::headless::Capture;
+use workbook::room::camera::BOOK_POSE;
+use workbook::room::scene::{
     CRATE_CENTRE, CRATE_SIZE, FLOOR_DEPTH, SKULL_CENTRE, SKULL_SIZE, WALL_HALF_WIDTH, WALL_HEIGHT,
 };
 use workbook_tests::geometry::{View, hit_y0_rect, hit_z0_rect, passes_near};

@@ -3,9 +3,9 @@
 //! water-over-nothing runs along the waterline. The default order has no fringe.
 
 use glam::Vec3;
-use workbook::camera::BOOK_POSE;
-use workbook::headless::Capture;
-use workbook::scene::{MIRROR_MAX, MIRROR_MIN, WATER_MAX, WATER_MIN};
+use workbook::app::headless::Capture;
+use workbook::room::camera::BOOK_POSE;
+use workbook::room::scene::{MIRROR_MAX, MIRROR_MIN, WATER_MAX, WATER_MIN};
 use workbook_tests::flip;
 use workbook_tests::geometry::{View, hit_y0_rect, hit_z0_rect};
 use workbook_tests::shots::{self, STRICT};

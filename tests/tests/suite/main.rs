@@ -1,6 +1,6 @@
 //! The workbook's test suite: one binary, so wgpu is linked once.
 //!
-//! Every render goes through `workbook::headless::render`, which fails on any wgpu error, validation
+//! Every render goes through `workbook::app::headless::render`, which fails on any wgpu error, validation
 //! errors above all: no test here can pass while wgpu complains.
 
 mod assets;

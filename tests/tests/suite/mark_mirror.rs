@@ -3,10 +3,12 @@
 
 use glam::Vec3;
 use workbook::Stop;
-use workbook::camera::BOOK_POSE;
-use workbook::headless::Capture;
-use workbook::scene::{CRATE_CENTRE, CRATE_SIZE, MIRROR_MAX, MIRROR_MIN, SKULL_CENTRE, SKULL_SIZE};
-use workbook::views::stencil_colour;
+use workbook::app::headless::Capture;
+use workbook::gpu::views::stencil_colour;
+use workbook::room::camera::BOOK_POSE;
+use workbook::room::scene::{
+    CRATE_CENTRE, CRATE_SIZE, MIRROR_MAX, MIRROR_MIN, SKULL_CENTRE, SKULL_SIZE,
+};
 use workbook_tests::geometry::{View, hit_box, hit_z0_rect, passes_near};
 use workbook_tests::shots;
 

@@ -3,9 +3,9 @@
 //! figure 10.1).
 
 use workbook::Stop;
-use workbook::camera::Camera;
-use workbook::headless::Capture;
-use workbook::scene::{CLEAR_SRGB, SKULL_CENTRE, SKULL_SIZE, mirror_reflection};
+use workbook::app::headless::Capture;
+use workbook::room::camera::Camera;
+use workbook::room::scene::{CLEAR_SRGB, SKULL_CENTRE, SKULL_SIZE, mirror_reflection};
 use workbook_tests::geometry::{View, passes_near};
 use workbook_tests::shots::{self, BEHIND_THE_WALL};
 

@@ -1,8 +1,8 @@
 //! Lesson 2: the shapes land in the stencil buffer where their geometry says, and the room is drawn
 //! exactly where the stencil test passes.
 
-use workbook::headless::Capture;
-use workbook::scene::CLEAR_SRGB;
+use workbook::app::headless::Capture;
+use workbook::room::scene::CLEAR_SRGB;
 use workbook_tests::shots;
 
 const W: u32 = 320;

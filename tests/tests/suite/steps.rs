@@ -4,8 +4,8 @@
 
 use image::Rgba;
 use workbook::Show;
-use workbook::scene::CLEAR_SRGB;
-use workbook::views::stencil_colour;
+use workbook::gpu::views::stencil_colour;
+use workbook::room::scene::CLEAR_SRGB;
 use workbook_tests::shots::{self, LESSONS, PAIRS, STRICT};
 use workbook_tests::strips;
 
@@ -69,9 +69,9 @@ fn the_book_strips_are_the_lessons_films() {
         let html = std::fs::read_to_string(strips::html_path(lesson)).unwrap_or_default();
         // The captions are the names `--list-steps` prints, from the same function.
         let names: Vec<&str> = film.iter().map(|still| still.step).collect();
-        let listed = workbook::steps::describe(&names);
+        let listed = workbook::lesson::steps::describe(&names);
         assert_eq!(
-            workbook::testing::strip_captions(&strips::html(lesson, &film)),
+            workbook::app::testing::strip_captions(&strips::html(lesson, &film)),
             listed
         );
         if html != strips::html(lesson, &film) {
@@ -83,7 +83,7 @@ fn the_book_strips_are_the_lessons_films() {
         let mut expected = vec!["strip.html".to_string()];
         for (index, still) in film.iter().enumerate() {
             for show in Show::BUFFERS {
-                let file = workbook::steps::film_file(index + 1, still.step, show);
+                let file = workbook::lesson::steps::film_file(index + 1, still.step, show);
                 let name = format!("steps/{lesson}/{}", file.trim_end_matches(".png"));
                 if let Err(error) = shots::check_image(&name, still.image(show), STRICT) {
                     failures.push(format!("{error:#}"));

@@ -7,8 +7,8 @@
 //! allows one step of 8-bit rounding; it also checks that mixing the sRGB bytes directly would be
 //! visibly wrong, so the test really tells the two spaces apart.
 
-use workbook::headless::Capture;
-use workbook::texture::{linear_to_srgb, srgb_to_linear};
+use workbook::app::headless::Capture;
+use workbook::gpu::{linear_to_srgb, srgb_to_linear};
 use workbook_tests::shots;
 
 const W: u32 = 320;

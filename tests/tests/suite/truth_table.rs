@@ -1,5 +1,5 @@
 //! The stencil truth table: the GPU's stencil test and operations, checked case by case against the
-//! CPU model in `workbook::stencil`.
+//! CPU model in `workbook::math::stencil`.
 //!
 //! One Depth24PlusStencil8 target holds every case, one pixel each:
 //!
@@ -26,9 +26,9 @@
 use std::collections::HashMap;
 
 use workbook::Gpu;
+use workbook::app::headless::read_texture;
 use workbook::gpu::DEPTH_STENCIL_FORMAT;
-use workbook::headless::read_texture;
-use workbook::stencil::{COMPARISONS, Case, OPERATIONS, passes};
+use workbook::math::stencil::{COMPARISONS, Case, OPERATIONS, passes};
 use workbook::wgpu;
 
 /// Stencil references: the ends of the range, single bits, values that straddle the masks' bits.

@@ -1,8 +1,8 @@
 //! A wgpu validation error fails the render that caused it — and only that one, although every
 //! headless render in the process shares one device.
 
-use workbook::headless::{self, Request};
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, states, wgpu};
+use workbook::app::headless::{self, Request};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, gpu::states, wgpu};
 
 /// A lesson with a bug: it draws without binding the object's bind group or vertex buffer.
 struct Broken(wgpu::RenderPipeline);

@@ -4,9 +4,9 @@
 //! handedness restored by `look_at`, hence the horizontal flip). The broken variant must not.
 
 use image::imageops;
-use workbook::camera::Camera;
-use workbook::headless::{self, Request};
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, states, wgpu};
+use workbook::app::headless::{self, Request};
+use workbook::room::camera::Camera;
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, wgpu};
 use workbook_tests::flip::{self, Threshold};
 
 /// The skull's mirror image alone, drawn with lesson 5's reflected recipe for its `winding-fix`

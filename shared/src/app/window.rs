@@ -12,14 +12,14 @@ use winit::event_loop::{ActiveEventLoop, EventLoop};
 use winit::keyboard::{Key, ModifiersState, NamedKey, PhysicalKey};
 use winit::window::{Window, WindowId};
 
-use crate::camera::Camera;
-use crate::cli::Args;
+use crate::app::args::Args;
+use crate::app::headless::check_size;
+use crate::app::runner::Runner;
 use crate::gpu::{self, Gpu};
-use crate::headless::check_size;
-use crate::knobs::Knobs;
 use crate::lesson::Lesson;
-use crate::runner::Runner;
-use crate::steps::{Show, Stop};
+use crate::lesson::knobs::Knobs;
+use crate::lesson::steps::{Show, Stop};
+use crate::room::camera::Camera;
 
 /// Opens the lesson in a window and runs until it is closed (or `--frames` frames were shown).
 pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
@@ -110,7 +110,7 @@ impl<L: Lesson> App<'_, L> {
         let (stop, show) = (self.args.step, self.args.show::<L>());
         stop.resolve(&runner.steps())?;
         if !runner.can_show(show) {
-            anyhow::bail!(crate::views::DepthViewPipelines::UNSUPPORTED);
+            anyhow::bail!(crate::gpu::views::DepthViewPipelines::UNSUPPORTED);
         }
         let state = State {
             window,

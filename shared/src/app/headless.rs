@@ -5,14 +5,14 @@
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
-use crate::camera::Camera;
+use crate::app::runner::Runner;
+use crate::gpu::views::DEPTH_COPY_FORMAT;
 use crate::gpu::{Gpu, HEADLESS_FORMAT};
-use crate::knobs::Knobs;
 use crate::lesson::Lesson;
-use crate::runner::Runner;
-use crate::scene::SceneOptions;
-use crate::steps::{Show, Stop};
-use crate::views::DEPTH_COPY_FORMAT;
+use crate::lesson::knobs::Knobs;
+use crate::lesson::steps::{Show, Stop};
+use crate::room::camera::Camera;
+use crate::room::scene::SceneOptions;
 
 /// What to render.
 #[derive(Debug, Clone)]
@@ -184,7 +184,7 @@ impl<L: Lesson> Headless<L> {
     fn film_unscoped(&self) -> Result<Vec<Still>> {
         let (runner, device) = (&self.runner, &self.runner.gpu.device);
         if !runner.can_show(Show::Depth) {
-            bail!(crate::views::DepthViewPipelines::UNSUPPORTED);
+            bail!(crate::gpu::views::DepthViewPipelines::UNSUPPORTED);
         }
         let view = |texture: &wgpu::Texture| texture.create_view(&Default::default());
         let (depth_view, stencil_view) = (view(&self.depth_picture), view(&self.stencil_picture));

@@ -2,7 +2,7 @@
 //!
 //! In D3D11 the depth-stencil, blend and rasterizer states are separate objects bound before a draw;
 //! in wgpu they are baked into a `RenderPipeline`. So each named state combination of the book is a
-//! [`Recipe`] here, and [`crate::scene::Scene::pipeline`] bakes it, labelled with its name. Lessons build
+//! [`Recipe`] here, and [`crate::room::scene::Scene::pipeline`] bakes it, labelled with its name. Lessons build
 //! on these with struct update syntax (`Recipe { depth_compare, ..OPAQUE }`), so a recipe lives once.
 
 use wgpu::{
@@ -169,7 +169,7 @@ impl Recipe {
     }
 }
 
-/// A comparison function by the name the knobs use (see [`crate::knobs::COMPARE_VALUES`]).
+/// A comparison function by the name the knobs use (see [`crate::lesson::knobs::COMPARE_VALUES`]).
 ///
 /// # Panics
 /// On a name outside that list: knob values are checked before a lesson sees them.
@@ -190,7 +190,7 @@ pub fn compare_function(name: &str) -> CompareFunction {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::knobs::COMPARE_VALUES;
+    use crate::lesson::knobs::COMPARE_VALUES;
 
     #[test]
     fn every_compare_knob_value_names_a_distinct_function() {

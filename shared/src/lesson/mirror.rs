@@ -2,7 +2,7 @@
 //! visible pixels marked with 1 in the stencil buffer — lesson 3's frame, kept here once.
 
 use crate::lesson::Frame;
-use crate::{Gpu, Scene, states};
+use crate::{Gpu, Scene, gpu::states};
 
 pub struct MarkedRoom {
     draw_room: wgpu::RenderPipeline,

@@ -4,8 +4,8 @@
 use glam::Vec2;
 use wgpu::util::DeviceExt;
 
-use crate::scene::Scene;
-use crate::states::Recipe;
+use crate::gpu::states::Recipe;
+use crate::room::scene::Scene;
 
 /// A shape on the GPU.
 pub struct Shape {
@@ -51,7 +51,7 @@ pub fn pipeline(device: &wgpu::Device, scene: &Scene, recipe: &Recipe) -> wgpu::
     });
     let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("shape.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(include_str!("shaders/shape.wgsl").into()),
+        source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/shape.wgsl").into()),
     });
     let attributes = wgpu::vertex_attr_array![0 => Float32x2];
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

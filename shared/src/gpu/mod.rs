@@ -1,5 +1,9 @@
-//! GPU setup: instance, adapter and device (honouring `WGPU_BACKEND` and `--backend`), the capture of
-//! every wgpu error, and the render targets the framework owns.
+//! The GPU: setup of instance, adapter and device (honouring `WGPU_BACKEND` and `--backend`), the
+//! capture of every wgpu error, and the render targets the framework owns; the named pipeline
+//! recipes ([`states`]) and the pictures of the depth and stencil buffers ([`views`]).
+
+pub mod states;
+pub mod views;
 
 use std::sync::{Arc, Mutex};
 
@@ -251,7 +255,7 @@ impl DepthStencil {
         let stencil_values = target_texture(
             device,
             "stencil values",
-            crate::views::STENCIL_VALUES_FORMAT,
+            crate::gpu::views::STENCIL_VALUES_FORMAT,
             size,
             wgpu::TextureUsages::TEXTURE_BINDING,
         )
@@ -269,5 +273,52 @@ impl DepthStencil {
 
     pub fn size(&self) -> (u32, u32) {
         (self.texture.width(), self.texture.height())
+    }
+}
+
+/// A uniform buffer at `binding`, read by vertex and fragment shaders.
+pub fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+/// An sRGB-encoded byte to linear light in 0..1.
+pub fn srgb_to_linear(value: u8) -> f32 {
+    let c = value as f32 / 255.0;
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// Linear light in 0..1 to an sRGB-encoded byte.
+pub fn linear_to_srgb(value: f32) -> u8 {
+    let c = value.clamp(0.0, 1.0);
+    let s = if c <= 0.003_130_8 {
+        c * 12.92
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    };
+    (s * 255.0).round() as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn srgb_round_trips() {
+        for value in 0..=255u8 {
+            assert_eq!(linear_to_srgb(srgb_to_linear(value)), value);
+        }
     }
 }

@@ -7,14 +7,21 @@
 //! A frame is a list of named **steps** ([`Frame::step`]), each one render pass. The names are data:
 //! `--list-steps`, `--step N`, `--film`, the window's `[` and `]`, the book's step strips and the tests
 //! all read them from the lesson's `render`, and nowhere else.
+//!
+//! Beside the trait: the knobs ([`knobs`]), where a frame stops and what it shows ([`steps`]), and the
+//! steps every mirror lesson begins with ([`mirror`]).
+
+pub mod knobs;
+pub mod mirror;
+pub mod steps;
 
 use anyhow::Result;
 
-use crate::camera::Camera;
 use crate::gpu::{DepthStencil, Gpu};
-use crate::knobs::{Knob, Knobs};
-use crate::scene::{self, Scene};
-use crate::steps::Show;
+use crate::lesson::knobs::{Knob, Knobs};
+use crate::lesson::steps::Show;
+use crate::room::camera::Camera;
+use crate::room::scene::{self, Scene};
 
 // ANCHOR: lesson
 pub trait Lesson: Sized {
@@ -119,7 +126,7 @@ impl<'a> Frame<'a> {
     /// Begins a render pass on the colour and depth-stencil targets, with the frame's camera and
     /// lights bound.
     fn pass(&mut self, label: &str, start: Start) -> wgpu::RenderPass<'_> {
-        let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::texture::srgb_to_linear(c) as f64);
+        let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::gpu::srgb_to_linear(c) as f64);
         let (color, depth, stencil) = match start {
             Start::Cleared => (
                 wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 }),

@@ -5,13 +5,13 @@ use std::sync::Arc;
 
 use anyhow::Result;
 
-use crate::camera::Camera;
+use crate::gpu::views::DepthViewPipelines;
 use crate::gpu::{DepthStencil, Gpu};
-use crate::knobs::Knobs;
+use crate::lesson::knobs::Knobs;
+use crate::lesson::steps::{Show, Stop};
 use crate::lesson::{Frame, Lesson};
-use crate::scene::{Scene, SceneOptions};
-use crate::steps::{Show, Stop};
-use crate::views::DepthViewPipelines;
+use crate::room::camera::Camera;
+use crate::room::scene::{Scene, SceneOptions};
 
 pub struct Runner<L: Lesson> {
     pub gpu: Arc<Gpu>,

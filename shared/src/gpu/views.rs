@@ -29,7 +29,13 @@ impl DepthViewPipelines {
     pub const UNSUPPORTED: &str =
         "the GL backend cannot read the depth buffer in a shader: use Vulkan (--backend vulkan)";
 
-    pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+    /// The pipelines for targets of `color_format`, linearising between the camera's `near` and
+    /// `far` planes.
+    pub fn new(
+        device: &wgpu::Device,
+        color_format: wgpu::TextureFormat,
+        (near, far): (f32, f32),
+    ) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("depth view bind group layout"),
             entries: &[
@@ -43,10 +49,9 @@ impl DepthViewPipelines {
                     },
                     count: None,
                 },
-                crate::scene::uniform_entry(1),
+                crate::gpu::uniform_entry(1),
             ],
         });
-        let (near, far) = (crate::camera::NEAR, crate::camera::FAR);
         let planes = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("depth view planes"),
             contents: bytemuck::cast_slice(&[near, far]),
@@ -59,7 +64,7 @@ impl DepthViewPipelines {
         });
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("depth_view.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("shaders/depth_view.wgsl").into()),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/depth_view.wgsl").into()),
         });
         let pipeline = |label: &str, entry: &str, format: wgpu::TextureFormat| {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -212,7 +217,7 @@ impl StencilViewPipeline {
     pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
         let colours: Vec<[f32; 4]> = (0..=255u8)
             .map(|v| {
-                let [r, g, b] = stencil_colour(v).map(crate::texture::srgb_to_linear);
+                let [r, g, b] = stencil_colour(v).map(crate::gpu::srgb_to_linear);
                 [r, g, b, 1.0]
             })
             .collect();
@@ -223,7 +228,7 @@ impl StencilViewPipeline {
         });
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("stencil_view.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("shaders/stencil_view.wgsl").into()),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/stencil_view.wgsl").into()),
         });
         let bits_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("stencil bits pipeline layout"),
@@ -298,7 +303,7 @@ impl StencilViewPipeline {
                     },
                     count: None,
                 },
-                crate::scene::uniform_entry(1),
+                crate::gpu::uniform_entry(1),
             ],
         });
         let palette_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {

@@ -5,6 +5,8 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use image::RgbaImage;
 
+use crate::gpu::{linear_to_srgb, srgb_to_linear};
+
 /// The format of every colour texture: the PNGs hold sRGB-encoded colours.
 pub const TEXTURE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
@@ -93,37 +95,9 @@ fn mip_chain(image: &RgbaImage) -> Vec<RgbaImage> {
     levels
 }
 
-/// An sRGB-encoded byte to linear light in 0..1.
-pub fn srgb_to_linear(value: u8) -> f32 {
-    let c = value as f32 / 255.0;
-    if c <= 0.04045 {
-        c / 12.92
-    } else {
-        ((c + 0.055) / 1.055).powf(2.4)
-    }
-}
-
-/// Linear light in 0..1 to an sRGB-encoded byte.
-pub fn linear_to_srgb(value: f32) -> u8 {
-    let c = value.clamp(0.0, 1.0);
-    let s = if c <= 0.003_130_8 {
-        c * 12.92
-    } else {
-        1.055 * c.powf(1.0 / 2.4) - 0.055
-    };
-    (s * 255.0).round() as u8
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn srgb_round_trips() {
-        for value in 0..=255u8 {
-            assert_eq!(linear_to_srgb(srgb_to_linear(value)), value);
-        }
-    }
 
     #[test]
     fn mip_chain_ends_at_one_texel_and_averages_in_linear_light() {

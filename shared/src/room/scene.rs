@@ -13,11 +13,11 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 use wgpu::util::DeviceExt;
 
 use crate::Gpu;
-use crate::camera::Camera;
-use crate::mesh::{GpuMesh, MeshData, Vertex};
-use crate::reflect::{Plane, normal_matrix, reflection};
-use crate::states::Recipe;
-use crate::texture;
+use crate::gpu::states::Recipe;
+use crate::math::reflect::{Plane, normal_matrix, reflection};
+use crate::room::camera::{Camera, FAR, NEAR};
+use crate::room::mesh::{GpuMesh, MeshData, Vertex};
+use crate::room::texture;
 
 /// Where the mirror is: the plane z = 0, x in -2.5..2.5, y in 0..4.
 pub const MIRROR_MIN: Vec3 = Vec3::new(-2.5, 0.0, 0.0);
@@ -247,8 +247,8 @@ pub struct Scene {
     pub(crate) frame_layout: wgpu::BindGroupLayout,
     shader: wgpu::ShaderModule,
     /// `None` where shaders cannot read the depth buffer (the GL backend).
-    pub(crate) depth_view: Option<crate::views::DepthViewPipelines>,
-    pub(crate) stencil_view: crate::views::StencilViewPipeline,
+    pub(crate) depth_view: Option<crate::gpu::views::DepthViewPipelines>,
+    pub(crate) stencil_view: crate::gpu::views::StencilViewPipeline,
 }
 
 impl Scene {
@@ -274,12 +274,12 @@ impl Scene {
 
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("frame bind group layout"),
-            entries: &[uniform_entry(0)],
+            entries: &[crate::gpu::uniform_entry(0)],
         });
         let object_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("object bind group layout"),
             entries: &[
-                uniform_entry(0),
+                crate::gpu::uniform_entry(0),
                 wgpu::BindGroupLayoutEntry {
                     binding: 1,
                     visibility: wgpu::ShaderStages::FRAGMENT,
@@ -305,7 +305,7 @@ impl Scene {
         });
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("scene.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("shaders/scene.wgsl").into()),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/scene.wgsl").into()),
         });
         let frame = |label: &str| {
             let buffer = device.create_buffer(&wgpu::BufferDescriptor {
@@ -456,8 +456,8 @@ impl Scene {
             &water_image,
             Vec2::ONE,
         );
-        let depth_view = crate::views::DepthViewPipelines::supported(adapter)
-            .then(|| crate::views::DepthViewPipelines::new(device, color_format));
+        let depth_view = crate::gpu::views::DepthViewPipelines::supported(adapter)
+            .then(|| crate::gpu::views::DepthViewPipelines::new(device, color_format, (NEAR, FAR)));
         Ok(Self {
             color_format,
             floor,
@@ -475,7 +475,7 @@ impl Scene {
             frame_layout,
             shader,
             depth_view,
-            stencil_view: crate::views::StencilViewPipeline::new(device, color_format),
+            stencil_view: crate::gpu::views::StencilViewPipeline::new(device, color_format),
         })
     }
 
@@ -642,18 +642,4 @@ fn mirror_mesh() -> MeshData {
     let size = MIRROR_MAX - MIRROR_MIN;
     mesh.add_quad(MIRROR_MIN, Vec3::X * size.x, Vec3::Y * size.y, Vec2::ONE);
     mesh
-}
-
-/// A uniform buffer at `binding`, read by vertex and fragment shaders.
-pub(crate) fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Uniform,
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    }
 }

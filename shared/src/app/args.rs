@@ -1,0 +1,98 @@
+//! The one command line every lesson shares.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use clap::Parser;
+
+use crate::lesson::Lesson;
+use crate::lesson::steps::{Show, Stop};
+use crate::room::camera::Camera;
+use crate::room::scene::{SceneOptions, default_assets};
+
+/// The largest width or height `--size` accepts before asking the GPU.
+pub const MAX_SIZE: u32 = 16384;
+
+#[derive(Debug, Parser)]
+#[command(
+    after_help = "Keys in the window: 1-9 cycle the knobs (Shift+digit goes back), [ and ] step \
+                  back and forward through the frame, Tab cycles color/depth/stencil, drag to \
+                  orbit, wheel to zoom, C prints the camera pose, Esc quits."
+)]
+pub struct Args {
+    /// Render one frame without a window and write it to this PNG file.
+    #[arg(long, value_name = "PATH")]
+    pub screenshot: Option<PathBuf>,
+    /// Size of the window or screenshot, WIDTHxHEIGHT.
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// Set a knob, e.g. --set depth=always (repeatable; see --list-knobs).
+    #[arg(long = "set", value_name = "KNOB=VALUE")]
+    pub settings: Vec<String>,
+    /// List this lesson's knobs, their values and what they mean, then exit.
+    #[arg(long)]
+    pub list_knobs: bool,
+    /// List the numbered steps of the frame (with the knobs as set), then exit.
+    #[arg(long)]
+    pub list_steps: bool,
+    /// Stop the frame after step N (from 1; see --list-steps), or `last`: the whole frame.
+    #[arg(long, value_name = "N", default_value = "last", value_parser = Stop::parse)]
+    pub step: Stop,
+    /// Which buffer the window or screenshot shows [default: the lesson's own, mostly color].
+    #[arg(long, value_name = "BUFFER", value_enum)]
+    pub show: Option<Show>,
+    /// Write every step's colour, depth and stencil buffers into this folder as
+    /// NN-<step>-{color,depth,stencil}.png, at --size.
+    #[arg(long, value_name = "DIR")]
+    pub film: Option<PathBuf>,
+    /// Camera pose YAW,PITCH,DISTANCE in degrees, degrees, metres (the window title shows the current one).
+    #[arg(long, value_name = "YAW,PITCH,DIST")]
+    pub camera: Option<String>,
+    /// Show this OBJ model instead of the skull (placed and scaled to fit).
+    #[arg(long, value_name = "PATH")]
+    pub model: Option<PathBuf>,
+    /// Close the window by itself after this many frames (for smoke tests).
+    #[arg(long, value_name = "N")]
+    pub frames: Option<u64>,
+    /// GPU backend: vulkan or gl (also metal, dx12); overrides WGPU_BACKEND.
+    #[arg(long, value_name = "NAME")]
+    pub backend: Option<String>,
+    /// Folder with the textures and the skull.
+    #[arg(long, value_name = "DIR")]
+    pub assets: Option<PathBuf>,
+    /// Say which GPU adapter was taken, and how long things took.
+    #[arg(short, long)]
+    pub verbose: bool,
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let parsed = text
+        .split_once(['x', 'X'])
+        .and_then(|(w, h)| Some((w.trim().parse::<u32>().ok()?, h.trim().parse::<u32>().ok()?)));
+    match parsed {
+        Some((w, h)) if (1..=MAX_SIZE).contains(&w) && (1..=MAX_SIZE).contains(&h) => Ok((w, h)),
+        Some(_) => Err(format!("each side must be 1 to {MAX_SIZE} pixels")),
+        None => Err("expected WIDTHxHEIGHT, e.g. 1280x720".to_string()),
+    }
+}
+
+impl Args {
+    pub fn scene(&self) -> SceneOptions {
+        SceneOptions {
+            assets: self.assets.clone().unwrap_or_else(default_assets),
+            model: self.model.clone(),
+        }
+    }
+
+    /// The buffer to show: `--show`, or the lesson's own.
+    pub fn show<L: Lesson>(&self) -> Show {
+        self.show.unwrap_or(L::SHOWS)
+    }
+
+    pub fn camera(&self) -> Result<Camera> {
+        self.camera
+            .as_deref()
+            .map(Camera::parse)
+            .unwrap_or(Ok(Camera::default()))
+    }
+}
