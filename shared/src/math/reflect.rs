@@ -59,27 +59,59 @@ pub fn normal_matrix(world: Mat4) -> Mat4 {
     Mat4::from_mat3(Mat3::from_mat4(world).inverse().transpose())
 }
 
+/// A small deterministic generator for the property tests of all of `math` (no dependency needed).
 #[cfg(test)]
-mod tests {
-    use super::*;
+pub(crate) mod numbers {
+    use super::Plane;
+    use glam::Vec3;
 
-    /// A small deterministic generator for the property tests (no dependency needed).
-    struct Numbers(u64);
+    /// Xorshift64: the same seed gives the same cases on every machine.
+    pub(crate) struct Numbers(pub(crate) u64);
+
     impl Numbers {
-        fn next(&mut self) -> f32 {
+        /// A number in −1..1.
+        pub(crate) fn next(&mut self) -> f32 {
             self.0 ^= self.0 << 13;
             self.0 ^= self.0 >> 7;
             self.0 ^= self.0 << 17;
-            (self.0 >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0 // -1..1
+            // The top 24 bits: exactly as many as an f32 mantissa holds.
+            (self.0 >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
         }
-        fn vec3(&mut self, scale: f32) -> Vec3 {
+
+        /// A number in `low..high`.
+        pub(crate) fn between(&mut self, low: f32, high: f32) -> f32 {
+            low + (self.next() + 1.0) * 0.5 * (high - low)
+        }
+
+        /// A vector in the cube −scale..scale.
+        pub(crate) fn vec3(&mut self, scale: f32) -> Vec3 {
             Vec3::new(self.next(), self.next(), self.next()) * scale
         }
-        fn plane(&mut self) -> Plane {
+
+        /// A direction of unit length (never near zero before normalising).
+        pub(crate) fn unit(&mut self) -> Vec3 {
+            loop {
+                let v = self.vec3(1.0);
+                // Inside the unit ball and not tiny: uniform over directions, safe to normalise.
+                if (0.01..=1.0).contains(&v.length_squared()) {
+                    return v.normalize();
+                }
+            }
+        }
+
+        /// A plane at most 5 from the origin, in any direction.
+        pub(crate) fn plane(&mut self) -> Plane {
+            // The offset keeps the normal away from zero.
             let normal = self.vec3(1.0) + Vec3::splat(1e-3);
             Plane::new(normal, self.next() * 5.0)
         }
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::numbers::Numbers;
+    use super::*;
 
     const EPS: f32 = 1e-4;
 
