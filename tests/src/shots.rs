@@ -42,6 +42,8 @@ pub struct Shot {
     pub camera: Option<&'static str>,
     /// The buffer shown, where it is not the lesson's own (`--show`).
     pub show: Option<Show>,
+    /// The step the frame stops after, by name (`--step`, which takes its number).
+    pub step: Option<&'static str>,
     pub threshold: Threshold,
 }
 
@@ -52,6 +54,7 @@ const SHOT: Shot = Shot {
     settings: &[],
     camera: None,
     show: None,
+    step: None,
     threshold: STRICT,
 };
 
@@ -196,6 +199,51 @@ pub const SHOTS: &[Shot] = &[
         settings: &["order=luna"],
         ..SHOT
     },
+    Shot {
+        name: "floor-mirror",
+        lesson: "floor-mirror",
+        ..SHOT
+    },
+    Shot {
+        name: "floor-mirror-spe",
+        lesson: "floor-mirror",
+        settings: &["recipe=spe"],
+        ..SHOT
+    },
+    Shot {
+        name: "floor-mirror-always",
+        lesson: "floor-mirror",
+        settings: &["recipe=always"],
+        ..SHOT
+    },
+    Shot {
+        name: "floor-mirror-sunk",
+        lesson: "floor-mirror",
+        settings: &["sink=2"],
+        ..SHOT
+    },
+    Shot {
+        name: "floor-mirror-sunk-unclipped",
+        lesson: "floor-mirror",
+        settings: &["sink=2", "clip=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "floor-mirror-reflection-depth",
+        lesson: "floor-mirror",
+        settings: &["sink=2", "clip=discard"],
+        show: Some(Show::Depth),
+        step: Some("draw the reflection"),
+        ..SHOT
+    },
+    Shot {
+        name: "floor-mirror-oblique-depth",
+        lesson: "floor-mirror",
+        settings: &["sink=2", "clip=oblique"],
+        show: Some(Show::Depth),
+        step: Some("draw the reflection"),
+        ..SHOT
+    },
 ];
 
 /// A wrong picture of the book and the right one it is shown beside. `cargo screenshots` makes an
@@ -240,6 +288,18 @@ pub const PAIRS: &[Pair] = &[
         wrong: "drawing-order-luna",
         right: "drawing-order",
     },
+    Pair {
+        wrong: "floor-mirror-spe",
+        right: "floor-mirror",
+    },
+    Pair {
+        wrong: "floor-mirror-always",
+        right: "floor-mirror",
+    },
+    Pair {
+        wrong: "floor-mirror-sunk-unclipped",
+        right: "floor-mirror-sunk",
+    },
 ];
 
 /// A camera behind the wall and to one side, where Luna's figure 10.1 looks from: the reflected
@@ -266,7 +326,16 @@ impl Shot {
         if let Some(show) = self.show {
             command += &format!(" --show {}", show.name());
         }
+        if let Some(Ok(workbook::Stop::After(number))) = self.stop() {
+            command += &format!(" --step {number}");
+        }
         command + &format!(" --screenshot {}.png", self.name)
+    }
+
+    /// Where the shot's frame stops, when it names a step.
+    fn stop(&self) -> Option<Result<workbook::Stop>> {
+        self.step
+            .map(|step| after_step(self.lesson, self.settings, step))
     }
 
     /// Renders the shot at the book's size.
@@ -277,6 +346,7 @@ impl Shot {
     /// Renders the shot at another size (the zoomed crops of [`Pair`] use a larger one).
     pub fn render_at(&self, size: (u32, u32)) -> Result<RgbaImage> {
         let camera = self.camera.map(Camera::parse).transpose()?;
+        let stop = self.stop().transpose()?;
         let capture = render(self.lesson, self.settings, |request| {
             (request.width, request.height) = size;
             if let Some(camera) = camera {
@@ -284,6 +354,9 @@ impl Shot {
             }
             if let Some(show) = self.show {
                 request.show = show;
+            }
+            if let Some(stop) = stop {
+                request.stop = stop;
             }
         })?;
         Ok(capture.color)
@@ -312,6 +385,7 @@ pub const LESSONS: &[&str] = &[
     "winding-fix",
     "transparent-mirror",
     "drawing-order",
+    "floor-mirror",
 ];
 
 /// Something to do with a lesson's type, given its package name: see [`for_lesson`].
@@ -330,6 +404,7 @@ pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
         "winding-fix" => task.run::<winding_fix::WindingFix>(),
         "transparent-mirror" => task.run::<transparent_mirror::TransparentMirror>(),
         "drawing-order" => task.run::<drawing_order::DrawingOrder>(),
+        "floor-mirror" => task.run::<floor_mirror::FloorMirror>(),
         other => bail!("there is no lesson called `{other}`"),
     })
 }
@@ -391,6 +466,23 @@ pub fn render_each(
         }
     }
     for_lesson(lesson, Each(each, adjust))?
+}
+
+/// Where the frame of lesson `lesson` (with these knob settings) stops after the step called `step`.
+pub fn after_step(lesson: &str, settings: &[&str], step: &str) -> Result<workbook::Stop> {
+    struct Steps<'a>(&'a [&'a str]);
+    impl ForLesson for Steps<'_> {
+        type Output = Result<Vec<&'static str>>;
+        fn run<L: Lesson>(self) -> Self::Output {
+            let mut request = Request::new::<L>(self.0)?;
+            (request.width, request.height) = (16, 16);
+            Ok(Headless::<L>::new(&request)?.steps())
+        }
+    }
+    let steps = for_lesson(lesson, Steps(settings))??;
+    let number = steps.iter().position(|s| *s == step);
+    let number = number.with_context(|| format!("{lesson} has no step `{step}`: {steps:?}"))?;
+    Ok(workbook::Stop::After(number + 1))
 }
 
 /// Films lesson `lesson` headless with these knob settings: every step's three buffers.

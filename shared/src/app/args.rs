@@ -89,10 +89,11 @@ impl Args {
         self.show.unwrap_or(L::SHOWS)
     }
 
-    pub fn camera(&self) -> Result<Camera> {
+    /// The camera pose: `--camera`, or the lesson's own.
+    pub fn camera<L: Lesson>(&self) -> Result<Camera> {
         self.camera
             .as_deref()
             .map(Camera::parse)
-            .unwrap_or(Ok(Camera::default()))
+            .unwrap_or(Ok(L::CAMERA))
     }
 }

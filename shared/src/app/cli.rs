@@ -59,7 +59,7 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         return Ok(());
     }
     let knobs = Knobs::from_settings(L::KNOBS, &args.settings)?;
-    let camera = args.camera()?;
+    let camera = args.camera::<L>()?;
     let headless = args.list_steps || args.screenshot.is_some() || args.film.is_some();
     if !headless {
         return crate::app::window::run::<L>(&args, knobs, camera);

@@ -41,7 +41,7 @@ impl Request {
             width: 1280,
             height: 720,
             knobs: Knobs::from_settings(L::KNOBS, settings)?,
-            camera: Camera::default(),
+            camera: L::CAMERA,
             scene: SceneOptions::default(),
             read_stencil: false,
             read_depth: false,

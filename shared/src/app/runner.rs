@@ -10,7 +10,7 @@ use crate::gpu::{DepthStencil, Gpu};
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
 use crate::lesson::{Frame, Lesson};
-use crate::room::camera::Camera;
+use crate::room::camera::{Camera, View};
 use crate::room::scene::{Scene, SceneOptions};
 
 pub struct Runner<L: Lesson> {
@@ -98,9 +98,13 @@ impl<L: Lesson> Runner<L> {
 
     /// Writes this frame's camera and lights.
     fn update(&self) {
+        self.scene.update(&self.gpu.queue, &self.view());
+    }
+
+    /// What the camera sees through, at the target's aspect ratio.
+    pub fn view(&self) -> View {
         let (width, height) = self.depth_stencil.size();
-        let aspect = width as f32 / height as f32;
-        self.scene.update(&self.gpu.queue, &self.camera, aspect);
+        self.camera.view_at(width as f32 / height as f32)
     }
 
     fn frame<'f>(
@@ -111,7 +115,8 @@ impl<L: Lesson> Runner<L> {
     ) -> Frame<'f> {
         let targets = (color, &self.depth_stencil);
         let scene = &self.scene;
-        let mut frame = Frame::new(&self.gpu, scene, self.camera, targets, stop, after_step);
+        let cameras = (self.camera, self.view());
+        let mut frame = Frame::new(&self.gpu, scene, cameras, targets, stop, after_step);
         self.lesson.render(&mut frame);
         frame
     }

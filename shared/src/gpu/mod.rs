@@ -12,6 +12,11 @@ use anyhow::{Context, Result, bail};
 /// The depth-stencil format of every lesson: 24 bits of depth and 8 bits of stencil, D3D's D24S8.
 pub const DEPTH_STENCIL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24PlusStencil8;
 
+/// Features the workbook uses where the adapter has them: user clip distances (lesson 8's first
+/// clip method) and timestamp queries (GPU time per step). Lessons check before use.
+pub const OPTIONAL_FEATURES: wgpu::Features =
+    wgpu::Features::CLIP_DISTANCES.union(wgpu::Features::TIMESTAMP_QUERY);
+
 /// The colour format of headless renders and screenshots: 8 bits per channel, sRGB-encoded.
 pub const HEADLESS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
@@ -94,7 +99,7 @@ impl Gpu {
         }
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("workbook device"),
-            required_features: wgpu::Features::empty(),
+            required_features: adapter.features() & OPTIONAL_FEATURES,
             required_limits: adapter.limits(),
             experimental_features: wgpu::ExperimentalFeatures::disabled(),
             memory_hints: wgpu::MemoryHints::MemoryUsage,

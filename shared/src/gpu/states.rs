@@ -6,8 +6,8 @@
 //! on these with struct update syntax (`Recipe { depth_compare, ..OPAQUE }`), so a recipe lives once.
 
 use wgpu::{
-    BlendState, ColorWrites, CompareFunction, Face, FrontFace, StencilFaceState, StencilOperation,
-    StencilState,
+    BlendComponent, BlendFactor, BlendOperation, BlendState, ColorWrites, CompareFunction, Face,
+    FrontFace, StencilFaceState, StencilOperation, StencilState,
 };
 
 use crate::gpu::DEPTH_STENCIL_FORMAT;
@@ -31,8 +31,26 @@ pub struct Recipe {
     pub blend: Option<BlendState>,
     /// Which colour channels are written at all.
     pub color_writes: ColorWrites,
+    /// Whether, and how, fragments behind the frame's clip plane are thrown away (lesson 8).
+    pub clip: Clip,
 }
 // ANCHOR_END: recipe
+
+// ANCHOR: clip
+/// How a recipe keeps only what lies in front of the frame's clip plane (a mirror's plane, for
+/// what is reflected in it). The third way, an oblique near plane, is not a pipeline state: it is in
+/// the projection matrix (`math::clip::oblique_projection`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Clip {
+    /// Nothing is clipped.
+    None,
+    /// The vertex shader writes the signed distance to the plane as a user clip distance, and the
+    /// rasterizer cuts each triangle where it crosses 0 (`Features::CLIP_DISTANCES`).
+    Distances,
+    /// The fragment shader discards fragments behind the plane.
+    Discard,
+}
+// ANCHOR_END: clip
 
 /// A stencil state that neither tests nor writes: every fragment passes, the buffer is untouched.
 pub const NO_STENCIL: StencilState = StencilState {
@@ -54,6 +72,7 @@ pub const OPAQUE: Recipe = Recipe {
     front_face: FrontFace::Ccw,
     blend: None,
     color_writes: ColorWrites::ALL,
+    clip: Clip::None,
 };
 // ANCHOR_END: opaque
 
@@ -155,6 +174,67 @@ pub const REFLECTED_TRANSPARENT: Recipe = Recipe {
     ..TRANSPARENT_NO_CULL
 };
 // ANCHOR_END: transparent_no_cull
+
+// ANCHOR: blend_over_mark
+/// A mirror's own surface (glass, polished stone) blended over its reflection, only where the mark
+/// holds the reference, whatever depth the reflection left there: the mark already knows what stands
+/// in front of the mirror, and a reflection drawn with an oblique projection leaves depths the
+/// normal projection cannot be compared with. It writes the surface's depth for what comes after.
+pub const BLEND_OVER_MARK: Recipe = Recipe {
+    name: "BLEND_OVER_MARK",
+    depth_compare: CompareFunction::Always,
+    stencil: DRAW_REFLECTION.stencil,
+    ..TRANSPARENT
+};
+// ANCHOR_END: blend_over_mark
+
+// ANCHOR: reset_depth
+/// Puts the depth of the marked pixels back to the far plane (Kilgard's step between the mark and the
+/// reflection): whatever the room drew *behind* the mirror — an object sunk through the floor — must
+/// not hide the mirror world. Drawn as one far-plane triangle over the screen (not with the scene's
+/// shader: see `lesson::mirror::ResetDepth`), depth test `Always`, where the stencil holds the
+/// reference, no colour.
+pub const RESET_DEPTH: Recipe = Recipe {
+    name: "RESET_DEPTH",
+    depth_compare: CompareFunction::Always,
+    stencil: DRAW_REFLECTION.stencil,
+    cull_mode: None,
+    color_writes: ColorWrites::empty(),
+    ..OPAQUE
+};
+// ANCHOR_END: reset_depth
+
+// ANCHOR: spe_reflection
+/// SPE's first floor mirror (OpenGL): the reflection drawn with no stencil, the depth test off, and
+/// mixed at a constant 40% over what is there — `glBlendColor(0, 0, 0, 0.4)` with
+/// `GL_CONSTANT_ALPHA`; in wgpu `BlendFactor::Constant` and `set_blend_constant`.
+pub const SPE_REFLECTION: Recipe = Recipe {
+    name: "SPE_REFLECTION",
+    depth_write: false,
+    depth_compare: CompareFunction::Always,
+    stencil: NO_STENCIL,
+    blend: Some(BlendState {
+        color: BlendComponent {
+            src_factor: BlendFactor::Constant,
+            dst_factor: BlendFactor::OneMinusConstant,
+            operation: BlendOperation::Add,
+        },
+        alpha: BlendComponent::OVER,
+    }),
+    ..CULL_CLOCKWISE
+};
+// ANCHOR_END: spe_reflection
+
+// ANCHOR: always_reflection
+/// A blog's wall mirror: the reflection where the stencil holds the reference, with the depth test
+/// `Always` and no depth writes, so the mirror images cover each other in the order they are drawn.
+pub const ALWAYS_REFLECTION: Recipe = Recipe {
+    name: "ALWAYS_REFLECTION",
+    depth_write: false,
+    depth_compare: CompareFunction::Always,
+    ..CULL_CLOCKWISE
+};
+// ANCHOR_END: always_reflection
 
 impl Recipe {
     /// The `DepthStencilState` of this recipe for the workbook's depth-stencil format.

@@ -1,5 +1,6 @@
-//! What every lesson after lesson 3 does before its own steps: the room as usual, then the mirror's
-//! visible pixels marked with 1 in the stencil buffer — lesson 3's frame, kept here once.
+//! What mirror lessons share: lesson 3's frame (the room as usual, then the mirror's visible pixels
+//! marked with 1 in the stencil buffer), which every lesson after it begins with, and the step that
+//! clears the depth behind a marked mirror.
 
 use crate::lesson::Frame;
 use crate::{Gpu, Scene, gpu::states};
@@ -34,4 +35,59 @@ impl MarkedRoom {
         });
     }
     // ANCHOR_END: steps
+}
+
+/// RESET_DEPTH's pipeline: a far-plane triangle over the screen, drawn where the stencil holds the
+/// reference, so that the marked pixels' depth is the far plane again.
+pub struct ResetDepth {
+    pipeline: wgpu::RenderPipeline,
+}
+
+impl ResetDepth {
+    pub fn new(gpu: &Gpu, scene: &Scene) -> Self {
+        let device = &gpu.device;
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("reset_depth.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/reset_depth.wgsl").into()),
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("reset depth pipeline layout"),
+            bind_group_layouts: &[],
+            immediate_size: 0,
+        });
+        let recipe = &states::RESET_DEPTH;
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(recipe.name),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_far_plane"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_no_colour"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: scene.color_format,
+                    blend: None,
+                    write_mask: recipe.color_writes,
+                })],
+            }),
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(recipe.depth_stencil()),
+            multisample: wgpu::MultisampleState::default(),
+            multiview_mask: None,
+            cache: None,
+        });
+        Self { pipeline }
+    }
+
+    /// Resets the depth wherever the stencil holds `reference`.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, reference: u32) {
+        pass.set_pipeline(&self.pipeline);
+        pass.set_stencil_reference(reference);
+        pass.draw(0..3, 0..1);
+    }
 }

@@ -20,7 +20,7 @@ use anyhow::Result;
 use crate::gpu::{DepthStencil, Gpu};
 use crate::lesson::knobs::{Knob, Knobs};
 use crate::lesson::steps::Show;
-use crate::room::camera::Camera;
+use crate::room::camera::{BOOK_POSE, Camera, View};
 use crate::room::scene::{self, Scene};
 
 // ANCHOR: lesson
@@ -33,6 +33,8 @@ pub trait Lesson: Sized {
     const KNOBS: &'static [Knob];
     /// The buffer the window and `--screenshot` show unless `--show` says otherwise.
     const SHOWS: Show = Show::Color;
+    /// Where the camera starts unless `--camera` says otherwise.
+    const CAMERA: Camera = BOOK_POSE;
 
     /// Builds the lesson's pipelines for these knob values. Called again when a knob changes.
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> Result<Self>;
@@ -51,6 +53,8 @@ pub struct Frame<'a> {
     pub scene: &'a Scene,
     /// Where the camera is this frame (for sorting transparent objects back to front).
     pub camera: Camera,
+    /// What the camera sees through: eye, view and projection (for views of a lesson's own).
+    pub view: View,
     pub(crate) encoder: wgpu::CommandEncoder,
     color: &'a wgpu::TextureView,
     depth_stencil: &'a DepthStencil,
@@ -68,7 +72,7 @@ impl<'a> Frame<'a> {
     pub(crate) fn new(
         gpu: &'a Gpu,
         scene: &'a Scene,
-        camera: Camera,
+        (camera, view): (Camera, View),
         (color, depth_stencil): (&'a wgpu::TextureView, &'a DepthStencil),
         stop: usize,
         after_step: Option<&'a mut dyn FnMut(&mut wgpu::CommandEncoder)>,
@@ -82,6 +86,7 @@ impl<'a> Frame<'a> {
             gpu,
             scene,
             camera,
+            view,
             encoder,
             color,
             depth_stencil,

@@ -114,6 +114,58 @@ impl Camera {
     }
 }
 
+/// What a frame is seen through: where the eye is, the world-to-view matrix and the projection.
+/// Usually the orbit camera's ([`Camera::view_at`]); a render-to-texture mirror sees the room through a
+/// reflected one ([`View::reflected`]), and an oblique projection swaps the near plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct View {
+    pub eye: Vec3,
+    pub view: Mat4,
+    pub projection: Mat4,
+}
+
+impl Camera {
+    /// The orbit camera's view of a target with this aspect ratio (width / height).
+    pub fn view_at(&self, aspect: f32) -> View {
+        View {
+            eye: self.eye(),
+            view: self.view(),
+            projection: Self::projection(aspect),
+        }
+    }
+}
+
+impl View {
+    /// A camera at `eye` looking at `target`, `up` pointing up on the screen.
+    pub fn look_at(eye: Vec3, target: Vec3, up: Vec3, projection: Mat4) -> Self {
+        Self {
+            eye,
+            view: glam::camera::rh::view::look_at_mat4(eye, target, up),
+            projection,
+        }
+    }
+
+    /// World to clip space.
+    pub fn view_projection(&self) -> Mat4 {
+        self.projection * self.view
+    }
+
+    /// The aspect ratio (width / height) the projection was made for.
+    pub fn aspect(&self) -> f32 {
+        self.projection.y_axis.y / self.projection.x_axis.x
+    }
+
+    /// The same eye seeing the world reflected by `reflection`: view · R. Its determinant is −1, so
+    /// it turns every triangle's winding around (draw with the front face flipped).
+    pub fn reflected(&self, reflection: Mat4) -> Self {
+        Self {
+            eye: reflection.transform_point3(self.eye),
+            view: self.view * reflection,
+            projection: self.projection,
+        }
+    }
+}
+
 impl std::fmt::Display for Camera {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{:.0},{:.0},{:.1}", self.yaw, self.pitch, self.distance)
@@ -131,6 +183,26 @@ mod tests {
         assert!(Camera::parse("1,2").is_err());
         assert!(Camera::parse("1,95,5").is_err());
         assert!(Camera::parse("a,b,c").is_err());
+    }
+
+    #[test]
+    fn a_view_knows_its_aspect_and_a_reflected_view_mirrors_the_eye() {
+        let view = BOOK_POSE.view_at(16.0 / 9.0);
+        assert!((view.aspect() - 16.0 / 9.0).abs() < 1e-5);
+        let floor = Mat4::from_scale(Vec3::new(1.0, -1.0, 1.0));
+        let mirrored = view.reflected(floor);
+        assert!(
+            mirrored
+                .eye
+                .abs_diff_eq(view.eye * Vec3::new(1.0, -1.0, 1.0), 1e-5)
+        );
+        // A point seen through the reflected view lands where its mirror image does in the real one.
+        let p = Vec3::new(0.3, 1.2, 2.0);
+        let a = mirrored.view_projection().project_point3(p);
+        let b = view
+            .view_projection()
+            .project_point3(floor.transform_point3(p));
+        assert!(a.abs_diff_eq(b, 1e-5));
     }
 
     #[test]

@@ -5,6 +5,7 @@
 //! The room is right-handed with +y up. The mirror lies in the plane z = 0 and faces +z; the room and
 //! the camera are on the +z side.
 
+use std::cell::Cell;
 use std::f32::consts::FRAC_1_SQRT_2;
 use std::path::{Path, PathBuf};
 
@@ -13,9 +14,9 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 use wgpu::util::DeviceExt;
 
 use crate::Gpu;
-use crate::gpu::states::Recipe;
+use crate::gpu::states::{Clip, Recipe};
 use crate::math::reflect::{Plane, normal_matrix, reflection};
-use crate::room::camera::{Camera, FAR, NEAR};
+use crate::room::camera::{FAR, NEAR, View};
 use crate::room::mesh::{GpuMesh, MeshData, Vertex};
 use crate::room::texture;
 
@@ -43,6 +44,10 @@ pub const WATER_MAX: Vec3 = Vec3::new(1.2, 0.25, 2.8);
 pub const SKULL_CENTRE: Vec3 = Vec3::new(-0.5, 1.5, 2.5);
 pub const SKULL_SIZE: f32 = 1.7;
 pub const SKULL_YAW_DEGREES: f32 = 50.0;
+/// The floor mirror of lesson 8: a slab of polished stone set into the floor (the plane y = 0),
+/// x in -4..4, z in 0.3..5.3 — the crate stands on it, the skull floats above it.
+pub const FLOOR_MIRROR_MIN: Vec3 = Vec3::new(-4.0, 0.0, 0.3);
+pub const FLOOR_MIRROR_MAX: Vec3 = Vec3::new(4.0, 0.0, 5.3);
 /// The sky, what every frame is cleared to: a dark slate (Luna clears to a light steel blue). Dark,
 /// so that a mirror with nothing reflected in it yet reads as dark glass, and what is missing from a
 /// reflection shows as a dark gap.
@@ -80,6 +85,14 @@ pub const SKULL_MATERIAL: Material = Material {
 };
 pub const MIRROR_MATERIAL: Material = Material {
     alpha: 0.5,
+    ..ROOM_MATERIAL
+};
+/// Lesson 8's polished stone: 60% of what is seen in it is the stone's own colour, 40% the
+/// reflection — SPE's constant alpha of 0.4 for the reflection, the other way round.
+pub const FLOOR_MIRROR_MATERIAL: Material = Material {
+    alpha: 0.6,
+    ambient: Vec3::splat(0.2),
+    diffuse: Vec3::new(0.35, 0.38, 0.42),
     ..ROOM_MATERIAL
 };
 /// Water lets half the light through.
@@ -144,6 +157,38 @@ struct FrameUniform {
     view_projection: Mat4,
     eye: Vec4,
     lights: [LightUniform; 3],
+    /// (n, d) of the plane that clipping recipes keep the front of (zero: none).
+    clip_plane: Vec4,
+}
+
+/// A frame's camera and lights on the GPU (bind group 0): the scene's own, and one for each world
+/// a lesson sees differently (reflected lights, a reflected camera, a clip plane).
+pub struct FrameBinding {
+    buffer: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+impl FrameBinding {
+    /// Writes what this frame sees through `view`, lit by `lights`, clipped by `clip_plane`.
+    pub fn write(&self, queue: &wgpu::Queue, view: &View, lights: &[Light; 3], clip_plane: Vec4) {
+        let uniform = FrameUniform {
+            view_projection: view.view_projection(),
+            eye: view.eye.extend(view.aspect()),
+            lights: lights.map(|light| LightUniform {
+                direction: light.direction.extend(0.0),
+                ambient: light.ambient.extend(1.0),
+                diffuse: light.diffuse.extend(1.0),
+                specular: light.specular.extend(1.0),
+            }),
+            clip_plane,
+        };
+        queue.write_buffer(&self.buffer, 0, bytemuck::bytes_of(&uniform));
+    }
+
+    /// Binds it as group 0.
+    pub fn bind(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_bind_group(0, &self.bind_group, &[]);
+    }
 }
 
 #[repr(C)]
@@ -184,12 +229,15 @@ pub fn default_assets() -> PathBuf {
 /// mirror shows it.
 pub struct Drawable {
     pub name: &'static str,
-    mesh: GpuMesh,
+    pub(crate) mesh: GpuMesh,
     bind_group: wgpu::BindGroup,
     reflected: wgpu::BindGroup,
     /// The uniform buffers of both bind groups, with what they hold.
-    uniforms: [(wgpu::Buffer, ObjectUniform); 2],
-    centre: Vec3,
+    uniforms: [(wgpu::Buffer, Cell<ObjectUniform>); 2],
+    /// The texture, kept to make more bind groups of the object (see [`Scene::placed`]).
+    texture: wgpu::TextureView,
+    /// The centre of the mesh's bounding box, in the mesh's own coordinates.
+    local_centre: Vec3,
 }
 
 impl Drawable {
@@ -208,24 +256,117 @@ impl Drawable {
 
     /// The centre of the object's bounding box, in the world.
     pub fn centre(&self) -> Vec3 {
-        self.centre
+        self.world().transform_point3(self.local_centre)
+    }
+
+    /// Where the object stands: its world matrix.
+    pub fn world(&self) -> Mat4 {
+        self.uniforms[0].1.get().world
+    }
+
+    /// Moves the object (and its mirror image in the wall mirror).
+    pub fn set_world(&self, queue: &wgpu::Queue, world: Mat4) {
+        let worlds = [world, reflected_world(world)];
+        for ((buffer, uniform), world) in self.uniforms.iter().zip(worlds) {
+            uniform.set(ObjectUniform {
+                world,
+                normal_matrix: normal_matrix(world),
+                ..uniform.get()
+            });
+            queue.write_buffer(buffer, 0, bytemuck::bytes_of(&uniform.get()));
+        }
     }
 
     /// Where the object's mirror image stands: its centre reflected in the mirror's plane.
     pub fn reflected_centre(&self) -> Vec3 {
-        mirror_reflection().transform_point3(self.centre)
+        mirror_reflection().transform_point3(self.centre())
+    }
+
+    /// Draws the object placed elsewhere (see [`Scene::placed`]).
+    pub fn draw_placed(&self, pass: &mut wgpu::RenderPass<'_>, placed: &Placed) {
+        debug_assert_eq!(placed.object, self.name, "a placement of another object");
+        pass.set_bind_group(1, &placed.bind_group, &[]);
+        self.mesh.draw(pass);
     }
 
     /// Changes the material's alpha (for the object and its mirror image).
     pub fn set_alpha(&self, queue: &wgpu::Queue, alpha: f32) {
         for (buffer, uniform) in &self.uniforms {
-            let uniform = ObjectUniform {
-                diffuse: uniform.diffuse.truncate().extend(alpha),
-                ..*uniform
-            };
-            queue.write_buffer(buffer, 0, bytemuck::bytes_of(&uniform));
+            uniform.set(ObjectUniform {
+                diffuse: uniform.get().diffuse.truncate().extend(alpha),
+                ..uniform.get()
+            });
+            queue.write_buffer(buffer, 0, bytemuck::bytes_of(&uniform.get()));
         }
     }
+}
+
+/// An object placed by another world matrix: see [`Scene::placed`].
+pub struct Placed {
+    object: &'static str,
+    bind_group: wgpu::BindGroup,
+}
+
+impl Placed {
+    /// The name of the object placed.
+    pub fn object(&self) -> &'static str {
+        self.object
+    }
+}
+
+impl FrameBinding {
+    fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, label: &str) -> Self {
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(&format!("{label} uniforms")),
+            size: std::mem::size_of::<FrameUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(&format!("{label} bind group")),
+            layout,
+            entries: &[wgpu::BindGroupEntry {
+                binding: 0,
+                resource: buffer.as_entire_binding(),
+            }],
+        });
+        Self { buffer, bind_group }
+    }
+}
+
+/// An object's bind group (group 1): its uniforms, texture and sampler.
+fn object_bind_group(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    sampler: &wgpu::Sampler,
+    texture: &wgpu::TextureView,
+    label: &str,
+    uniform: &ObjectUniform,
+) -> (wgpu::Buffer, wgpu::BindGroup) {
+    let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some(&format!("{label} uniforms")),
+        contents: bytemuck::bytes_of(uniform),
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+    });
+    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some(&format!("{label} bind group")),
+        layout,
+        entries: &[
+            wgpu::BindGroupEntry {
+                binding: 0,
+                resource: buffer.as_entire_binding(),
+            },
+            wgpu::BindGroupEntry {
+                binding: 1,
+                resource: wgpu::BindingResource::TextureView(texture),
+            },
+            wgpu::BindGroupEntry {
+                binding: 2,
+                resource: wgpu::BindingResource::Sampler(sampler),
+            },
+        ],
+    });
+    (buffer, group)
 }
 
 /// The room on the GPU, and the layouts every lesson's pipelines share.
@@ -239,13 +380,18 @@ pub struct Scene {
     /// Lesson 7's transparent objects.
     pub fence_box: Drawable,
     pub water: Drawable,
-    frame_buffer: wgpu::Buffer,
-    pub(crate) frame_bind_group: wgpu::BindGroup,
-    reflected_frame_buffer: wgpu::Buffer,
-    reflected_frame_bind_group: wgpu::BindGroup,
+    /// Lesson 8's floor: the polished stone mirror, and the tiles around it.
+    pub floor_mirror: Drawable,
+    pub floor_around_mirror: Drawable,
+    frame: FrameBinding,
+    reflected_frame: FrameBinding,
     pipeline_layout: wgpu::PipelineLayout,
     pub(crate) frame_layout: wgpu::BindGroupLayout,
+    object_layout: wgpu::BindGroupLayout,
+    sampler: wgpu::Sampler,
     shader: wgpu::ShaderModule,
+    /// The shader with user clip distances, where the device has them (`Features::CLIP_DISTANCES`).
+    clip_distances_shader: Option<wgpu::ShaderModule>,
     /// `None` where shaders cannot read the depth buffer (the GL backend).
     pub(crate) depth_view: Option<crate::gpu::views::DepthViewPipelines>,
     pub(crate) stencil_view: crate::gpu::views::StencilViewPipeline,
@@ -307,25 +453,23 @@ impl Scene {
             label: Some("scene.wgsl"),
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/scene.wgsl").into()),
         });
-        let frame = |label: &str| {
-            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(&format!("{label} uniforms")),
-                size: std::mem::size_of::<FrameUniform>() as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
+        // The same shader with a user clip distance (its `enable` must come first).
+        let clip_distances_shader = device
+            .features()
+            .contains(wgpu::Features::CLIP_DISTANCES)
+            .then(|| {
+                let source = format!(
+                    "enable clip_distances;\n{}\n{}",
+                    include_str!("../shaders/scene.wgsl"),
+                    include_str!("../shaders/clip_distances.wgsl")
+                );
+                device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some("scene.wgsl with clip distances"),
+                    source: wgpu::ShaderSource::Wgsl(source.into()),
+                })
             });
-            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(&format!("{label} bind group")),
-                layout: &frame_layout,
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: buffer.as_entire_binding(),
-                }],
-            });
-            (buffer, bind_group)
-        };
-        let (frame_buffer, frame_bind_group) = frame("frame");
-        let (reflected_frame_buffer, reflected_frame_bind_group) = frame("reflected frame");
+        let frame = FrameBinding::new(device, &frame_layout, "frame");
+        let reflected_frame = FrameBinding::new(device, &frame_layout, "reflected frame");
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("repeating trilinear sampler"),
             address_mode_u: wgpu::AddressMode::Repeat,
@@ -354,30 +498,9 @@ impl Scene {
                     specular: material.specular.extend(material.shininess),
                     params: Vec4::new(repeat.x, repeat.y, material.alpha_cutoff, 0.0),
                 };
-                let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                    label: Some(&format!("{label} uniforms")),
-                    contents: bytemuck::bytes_of(&uniform),
-                    usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                });
-                let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some(&format!("{label} bind group")),
-                    layout: &object_layout,
-                    entries: &[
-                        wgpu::BindGroupEntry {
-                            binding: 0,
-                            resource: buffer.as_entire_binding(),
-                        },
-                        wgpu::BindGroupEntry {
-                            binding: 1,
-                            resource: wgpu::BindingResource::TextureView(&view),
-                        },
-                        wgpu::BindGroupEntry {
-                            binding: 2,
-                            resource: wgpu::BindingResource::Sampler(&sampler),
-                        },
-                    ],
-                });
-                (group, (buffer, uniform))
+                let (buffer, group) =
+                    object_bind_group(device, &object_layout, &sampler, &view, &label, &uniform);
+                (group, (buffer, Cell::new(uniform)))
             };
             let (bind_group, normal) = make(name.to_string(), world);
             let (reflected, mirrored) = make(format!("reflected {name}"), reflected_world(world));
@@ -388,7 +511,8 @@ impl Scene {
                 bind_group,
                 reflected,
                 uniforms: [normal, mirrored],
-                centre: world.transform_point3((min + max) / 2.0),
+                texture: view,
+                local_centre: (min + max) / 2.0,
             }
         };
 
@@ -456,6 +580,22 @@ impl Scene {
             &water_image,
             Vec2::ONE,
         );
+        let floor_mirror = object(
+            "floor mirror",
+            &floor_mirror_mesh(),
+            Mat4::IDENTITY,
+            FLOOR_MIRROR_MATERIAL,
+            &ice,
+            Vec2::ONE,
+        );
+        let floor_around_mirror = object(
+            "floor around the mirror",
+            &floor_around_mirror_mesh(),
+            Mat4::IDENTITY,
+            ROOM_MATERIAL,
+            &checker,
+            Vec2::ONE,
+        );
         let depth_view = crate::gpu::views::DepthViewPipelines::supported(adapter)
             .then(|| crate::gpu::views::DepthViewPipelines::new(device, color_format, (NEAR, FAR)));
         Ok(Self {
@@ -467,32 +607,47 @@ impl Scene {
             skull,
             fence_box,
             water,
-            frame_buffer,
-            frame_bind_group,
-            reflected_frame_buffer,
-            reflected_frame_bind_group,
+            floor_mirror,
+            floor_around_mirror,
+            frame,
+            reflected_frame,
             pipeline_layout,
             frame_layout,
+            object_layout,
+            sampler,
             shader,
+            clip_distances_shader,
             depth_view,
             stencil_view: crate::gpu::views::StencilViewPipeline::new(device, color_format),
         })
     }
 
-    /// Bakes a recipe into a pipeline that draws the room's objects.
+    /// Whether this device can clip with user clip distances ([`Clip::Distances`]).
+    pub fn has_clip_distances(&self) -> bool {
+        self.clip_distances_shader.is_some()
+    }
+
+    /// Bakes a recipe into a pipeline that draws the room's objects. A recipe that clips with
+    /// [`Clip::Distances`] on a device without them falls back to the unclipped shader: check
+    /// [`Scene::has_clip_distances`] first.
     pub fn pipeline(&self, device: &wgpu::Device, recipe: &Recipe) -> wgpu::RenderPipeline {
+        let (module, vertex, fragment) = match (recipe.clip, &self.clip_distances_shader) {
+            (Clip::Distances, Some(clipping)) => (clipping, "vs_clip_distances", "fs_main"),
+            (Clip::Discard, _) => (&self.shader, "vs_main", "fs_discard"),
+            _ => (&self.shader, "vs_main", "fs_main"),
+        };
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(recipe.name),
             layout: Some(&self.pipeline_layout),
             vertex: wgpu::VertexState {
-                module: &self.shader,
-                entry_point: Some("vs_main"),
+                module,
+                entry_point: Some(vertex),
                 compilation_options: Default::default(),
                 buffers: &[Some(Vertex::LAYOUT)],
             },
             fragment: Some(wgpu::FragmentState {
-                module: &self.shader,
-                entry_point: Some("fs_main"),
+                module,
+                entry_point: Some(fragment),
                 compilation_options: Default::default(),
                 targets: &[Some(wgpu::ColorTargetState {
                     format: self.color_format,
@@ -514,24 +669,33 @@ impl Scene {
     }
 
     /// Writes this frame's camera and lights, and the reflected lights for mirror images.
-    pub fn update(&self, queue: &wgpu::Queue, camera: &Camera, aspect: f32) {
-        let frame = |lights: [Light; 3]| FrameUniform {
-            view_projection: camera.view_projection(aspect),
-            eye: camera.eye().extend(aspect),
-            lights: lights.map(|light| LightUniform {
-                direction: light.direction.extend(0.0),
-                ambient: light.ambient.extend(1.0),
-                diffuse: light.diffuse.extend(1.0),
-                specular: light.specular.extend(1.0),
-            }),
+    pub fn update(&self, queue: &wgpu::Queue, view: &View) {
+        self.frame.write(queue, view, &LIGHTS, Vec4::ZERO);
+        self.reflected_frame
+            .write(queue, view, &reflected_lights(), Vec4::ZERO);
+    }
+
+    /// A camera-and-lights binding of a lesson's own, written with [`FrameBinding::write`].
+    pub fn frame_binding(&self, device: &wgpu::Device, label: &str) -> FrameBinding {
+        FrameBinding::new(device, &self.frame_layout, label)
+    }
+
+    /// The object placed by another world matrix (a mirror image in another plane, say), as a bind
+    /// group of its own: draw it with [`Drawable::draw_placed`].
+    pub fn placed(&self, device: &wgpu::Device, object: &Drawable, world: Mat4) -> Placed {
+        let uniform = ObjectUniform {
+            world,
+            normal_matrix: normal_matrix(world),
+            ..object.uniforms[0].1.get()
         };
-        queue.write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&frame(LIGHTS)));
-        let reflected = frame(reflected_lights());
-        queue.write_buffer(
-            &self.reflected_frame_buffer,
-            0,
-            bytemuck::bytes_of(&reflected),
-        );
+        let label = format!("{} placed", object.name);
+        let (layout, sampler) = (&self.object_layout, &self.sampler);
+        let (_, bind_group) =
+            object_bind_group(device, layout, sampler, &object.texture, &label, &uniform);
+        Placed {
+            object: object.name,
+            bind_group,
+        }
     }
 
     /// Draws the room's solid objects — floor, wall, crate and skull, all but the mirror — with the
@@ -544,13 +708,13 @@ impl Scene {
 
     /// Binds the frame's camera and lights (group 0).
     pub fn bind_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
-        pass.set_bind_group(0, &self.frame_bind_group, &[]);
+        self.frame.bind(pass);
     }
 
     /// Binds the camera with the lights reflected in the mirror (group 0), for mirror images: the
     /// reflected skull must be lit as the real one is, seen from behind the glass.
     pub fn bind_reflected_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
-        pass.set_bind_group(0, &self.reflected_frame_bind_group, &[]);
+        self.reflected_frame.bind(pass);
     }
 }
 
@@ -633,6 +797,48 @@ fn wall_mesh() -> MeshData {
         } else {
             [x / 2.0, z / 2.0]
         };
+    }
+    mesh
+}
+
+/// Lesson 8's stone mirror: one slab of the floor, facing up.
+fn floor_mirror_mesh() -> MeshData {
+    let mut mesh = MeshData::default();
+    let size = FLOOR_MIRROR_MAX - FLOOR_MIRROR_MIN;
+    let near_left = Vec3::new(FLOOR_MIRROR_MIN.x, 0.0, FLOOR_MIRROR_MAX.z);
+    mesh.add_quad(
+        near_left,
+        Vec3::X * size.x,
+        -Vec3::Z * size.z,
+        Vec2::new(2.0, 1.25),
+    );
+    mesh
+}
+
+/// The floor with a hole where lesson 8's stone mirror lies (no two surfaces in one plane, so no
+/// z-fighting): four strips around it, the checker tiles laid by position so they line up.
+fn floor_around_mirror_mesh() -> MeshData {
+    let (w, depth) = (WALL_HALF_WIDTH, FLOOR_DEPTH);
+    let (a, b) = (FLOOR_MIRROR_MIN, FLOOR_MIRROR_MAX);
+    let mut mesh = MeshData::default();
+    // (x0, z0) to (x1, z1) of each strip: behind, in front of, left of and right of the slab.
+    for (x0, z0, x1, z1) in [
+        (-w, 0.0, w, a.z),
+        (-w, b.z, w, depth),
+        (-w, a.z, a.x, b.z),
+        (b.x, a.z, w, b.z),
+    ] {
+        mesh.add_quad(
+            Vec3::new(x0, 0.0, z1),
+            Vec3::X * (x1 - x0),
+            -Vec3::Z * (z1 - z0),
+            Vec2::new(x1 - x0, z1 - z0) / 4.0,
+        );
+    }
+    // One 4 m tile, by position, as the whole floor lays it.
+    for vertex in &mut mesh.vertices {
+        let [x, _, z] = vertex.position;
+        vertex.uv = [(x + w) / 4.0, z / 4.0];
     }
     mesh
 }

@@ -13,6 +13,8 @@ struct Frame {
     // xyz: the eye; w: the target's aspect ratio.
     eye: vec4<f32>,
     lights: array<Light, 3>,
+    // (n, d): clipping recipes keep the points p with n·p + d >= 0 (lesson 8).
+    clip_plane: vec4<f32>,
 };
 
 struct Object {
@@ -48,6 +50,10 @@ struct VertexOut {
 
 @vertex
 fn vs_main(in: VertexIn) -> VertexOut {
+    return transform(in);
+}
+
+fn transform(in: VertexIn) -> VertexOut {
     let world = object.world * vec4<f32>(in.position, 1.0);
     var out: VertexOut;
     out.clip = frame.view_projection * world;
@@ -59,6 +65,21 @@ fn vs_main(in: VertexIn) -> VertexOut {
 
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
+    return shade(in);
+}
+
+// ANCHOR: discard
+// Clip by discarding: a fragment behind the frame's clip plane is thrown away.
+@fragment
+fn fs_discard(in: VertexOut) -> @location(0) vec4<f32> {
+    if dot(frame.clip_plane, vec4<f32>(in.world_position, 1.0)) < 0.0 {
+        discard;
+    }
+    return shade(in);
+}
+// ANCHOR_END: discard
+
+fn shade(in: VertexOut) -> vec4<f32> {
     let texel = textureSample(base_texture, base_sampler, in.uv);
     let alpha = texel.a * object.diffuse.a;
     if object.params.z > 0.0 && texel.a < object.params.z {

@@ -7,6 +7,7 @@ mod assets;
 mod book;
 mod depth;
 mod drawing_order;
+mod floor_mirror;
 mod knobs;
 mod mark_mirror;
 mod reflect_skull;

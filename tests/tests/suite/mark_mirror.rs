@@ -90,9 +90,10 @@ fn the_mark_is_the_visible_mirror_with_a_hole_for_the_crate() {
 /// mirror" (step 3) it holds the mark.
 #[test]
 fn the_mark_is_made_by_the_step_that_marks_the_mirror() {
-    let room = render_until(&[], Stop::After(2));
+    let step = |name| shots::after_step("mark-mirror", &[], name).unwrap();
+    let room = render_until(&[], step("draw the room"));
     assert!(room.stencil.as_ref().unwrap().iter().all(|&v| v == 0));
-    let [mirror, _, _] = check(&render_until(&[], Stop::After(3)), 0);
+    let [mirror, _, _] = check(&render_until(&[], step("mark the mirror")), 0);
     assert!(mirror > 3000, "only {mirror} mirror pixels");
 }
 

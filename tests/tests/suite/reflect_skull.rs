@@ -31,8 +31,9 @@ fn render_until(settings: &[&str], camera: Camera, stop: Stop) -> Capture {
 #[test]
 fn the_reflection_step_reads_the_mark_and_changes_only_the_marked_pixels() {
     let camera = Camera::default();
-    let marked = render_until(&[], camera, Stop::After(3));
-    let reflected = render_until(&[], camera, Stop::After(4));
+    let step = |name| shots::after_step("reflect-skull", &[], name).unwrap();
+    let marked = render_until(&[], camera, step("mark the mirror"));
+    let reflected = render_until(&[], camera, step("draw the reflected skull"));
     assert_eq!(
         marked.stencil, reflected.stencil,
         "the reflection changed the stencil"
