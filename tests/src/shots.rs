@@ -229,6 +229,47 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "render-to-texture",
+        lesson: "render-to-texture",
+        ..SHOT
+    },
+    Shot {
+        name: "render-to-texture-texture",
+        lesson: "render-to-texture",
+        step: Some("render the reflection into a texture"),
+        ..SHOT
+    },
+    Shot {
+        name: "render-to-texture-64",
+        lesson: "render-to-texture",
+        settings: &["resolution=64"],
+        ..SHOT
+    },
+    Shot {
+        name: "render-to-texture-wall",
+        lesson: "render-to-texture",
+        settings: &["plane=wall"],
+        ..SHOT
+    },
+    Shot {
+        name: "render-to-texture-wall-rastertek",
+        lesson: "render-to-texture",
+        settings: &["plane=wall", "camera=rastertek"],
+        ..SHOT
+    },
+    Shot {
+        name: "render-to-texture-sunk",
+        lesson: "render-to-texture",
+        settings: &["sink=2"],
+        ..SHOT
+    },
+    Shot {
+        name: "render-to-texture-unclipped",
+        lesson: "render-to-texture",
+        settings: &["sink=2", "clip=off"],
+        ..SHOT
+    },
+    Shot {
         name: "floor-mirror-reflection-depth",
         lesson: "floor-mirror",
         settings: &["sink=2", "clip=discard"],
@@ -299,6 +340,18 @@ pub const PAIRS: &[Pair] = &[
     Pair {
         wrong: "floor-mirror-sunk-unclipped",
         right: "floor-mirror-sunk",
+    },
+    Pair {
+        wrong: "render-to-texture-64",
+        right: "render-to-texture",
+    },
+    Pair {
+        wrong: "render-to-texture-wall-rastertek",
+        right: "render-to-texture-wall",
+    },
+    Pair {
+        wrong: "render-to-texture-unclipped",
+        right: "render-to-texture-sunk",
     },
 ];
 
@@ -386,6 +439,7 @@ pub const LESSONS: &[&str] = &[
     "transparent-mirror",
     "drawing-order",
     "floor-mirror",
+    "render-to-texture",
 ];
 
 /// Something to do with a lesson's type, given its package name: see [`for_lesson`].
@@ -405,6 +459,7 @@ pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
         "transparent-mirror" => task.run::<transparent_mirror::TransparentMirror>(),
         "drawing-order" => task.run::<drawing_order::DrawingOrder>(),
         "floor-mirror" => task.run::<floor_mirror::FloorMirror>(),
+        "render-to-texture" => task.run::<render_to_texture::RenderToTexture>(),
         other => bail!("there is no lesson called `{other}`"),
     })
 }

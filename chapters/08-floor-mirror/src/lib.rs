@@ -37,12 +37,7 @@ pub const KNOBS: &[Knob] = &[
         default: "stencil",
         meaning: "the mark and Equal (ours), SPE's no stencil and no depth test, or a blog's depth Always",
     },
-    Knob {
-        name: "sink",
-        values: &["0", "1", "1.5", "2"],
-        default: "0",
-        meaning: "how far the skull is lowered, in metres: from 1 on its jaw goes through the floor",
-    },
+    SINK,
     Knob {
         name: "clip",
         values: &["off", "clip-distances", "discard", "oblique"],
@@ -51,6 +46,14 @@ pub const KNOBS: &[Knob] = &[
     },
 ];
 // ANCHOR_END: knobs
+
+/// How far the skull is lowered (lesson 9 has it too).
+pub const SINK: Knob = Knob {
+    name: "sink",
+    values: &["0", "1", "1.5", "2"],
+    default: "0",
+    meaning: "how far the skull is lowered, in metres: from 1 on its jaw goes through the floor",
+};
 
 /// The three ways of the `recipe` knob.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

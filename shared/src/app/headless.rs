@@ -7,7 +7,7 @@ use image::RgbaImage;
 
 use crate::app::runner::Runner;
 use crate::gpu::views::DEPTH_COPY_FORMAT;
-use crate::gpu::{Gpu, HEADLESS_FORMAT};
+use crate::gpu::{Gpu, HEADLESS_FORMAT, Offscreen};
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
@@ -114,6 +114,8 @@ pub struct Headless<L: Lesson> {
     /// Where the depth and the stencil buffer are painted to be seen.
     depth_picture: wgpu::Texture,
     stencil_picture: wgpu::Texture,
+    /// Where the colours of a step drawn into a lesson's own target are shown in a film.
+    offscreen_picture: wgpu::Texture,
     read_stencil: bool,
     read_depth: bool,
     stop: Stop,
@@ -146,6 +148,7 @@ impl<L: Lesson> Headless<L> {
                 color: picture("headless colour target"),
                 depth_picture: picture("depth picture"),
                 stencil_picture: picture("stencil picture"),
+                offscreen_picture: picture("offscreen picture"),
                 runner,
                 read_stencil: request.read_stencil,
                 read_depth: request.read_depth,
@@ -188,19 +191,39 @@ impl<L: Lesson> Headless<L> {
         }
         let view = |texture: &wgpu::Texture| texture.create_view(&Default::default());
         let (depth_view, stencil_view) = (view(&self.depth_picture), view(&self.stencil_picture));
-        let pictures = [&self.color, &self.depth_picture, &self.stencil_picture];
+        let offscreen_view = view(&self.offscreen_picture);
         let mut readbacks = Vec::new();
         let mut failure = None;
-        let (encoder, steps) = runner.record_each_step(&view(&self.color), &mut |encoder| {
-            let shown = runner
-                .show(encoder, Show::Depth, &depth_view)
-                .and_then(|()| runner.show(encoder, Show::Stencil, &stencil_view));
-            if let Err(error) = shown {
-                failure.get_or_insert(error);
-            }
-            let all = wgpu::TextureAspect::All;
-            readbacks.push(pictures.map(|t| Readback::new(device, encoder, t, all, 4)));
-        });
+        let (encoder, steps) = runner.record_each_step(
+            &view(&self.color),
+            &mut |encoder, _, offscreen: Option<&Offscreen>| {
+                // A step drawn into the lesson's own target is seen in that target's buffers.
+                let shown = match offscreen {
+                    Some(target) => [
+                        (Show::Color, &offscreen_view),
+                        (Show::Depth, &depth_view),
+                        (Show::Stencil, &stencil_view),
+                    ]
+                    .into_iter()
+                    .try_for_each(|(show, output)| {
+                        runner.show_offscreen(encoder, show, target, output)
+                    }),
+                    None => runner
+                        .show(encoder, Show::Depth, &depth_view)
+                        .and_then(|()| runner.show(encoder, Show::Stencil, &stencil_view)),
+                };
+                if let Err(error) = shown {
+                    failure.get_or_insert(error);
+                }
+                let color = match offscreen {
+                    Some(_) => &self.offscreen_picture,
+                    None => &self.color,
+                };
+                let pictures = [color, &self.depth_picture, &self.stencil_picture];
+                let all = wgpu::TextureAspect::All;
+                readbacks.push(pictures.map(|t| Readback::new(device, encoder, t, all, 4)));
+            },
+        );
         if let Some(error) = failure {
             return Err(error);
         }
@@ -225,17 +248,13 @@ impl<L: Lesson> Headless<L> {
         let (runner, size) = (&self.runner, (self.color.width(), self.color.height()));
         let device = &runner.gpu.device;
         let color_view = self.color.create_view(&Default::default());
-        let (mut encoder, _) = runner.record(&color_view, self.stop)?;
         let shown = match self.show {
             Show::Color => &self.color,
             Show::Depth | Show::RawDepth => &self.depth_picture,
             Show::Stencil => &self.stencil_picture,
         };
-        runner.show(
-            &mut encoder,
-            self.show,
-            &shown.create_view(&Default::default()),
-        )?;
+        let output = shown.create_view(&Default::default());
+        let (mut encoder, _) = runner.record(&color_view, self.stop, self.show, &output)?;
 
         let all = wgpu::TextureAspect::All;
         let mut readbacks = vec![Readback::new(device, &mut encoder, shown, all, 4)];

@@ -6,10 +6,10 @@ use std::sync::Arc;
 use anyhow::Result;
 
 use crate::gpu::views::DepthViewPipelines;
-use crate::gpu::{DepthStencil, Gpu};
+use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
-use crate::lesson::{Frame, Lesson};
+use crate::lesson::{AfterStep, Frame, Lesson};
 use crate::room::camera::{Camera, View};
 use crate::room::scene::{Scene, SceneOptions};
 
@@ -70,26 +70,49 @@ impl<L: Lesson> Runner<L> {
             .steps
     }
 
-    /// Records the lesson's frame into `color`, up to the step `stop` names, and returns the encoder
-    /// (for the caller to add views, copies and submit) with the frame's step names. Fails on a step
-    /// past the end.
+    /// Records the lesson's frame into `color` up to the step `stop` names, and paints `output`
+    /// with the buffer `show` asks for (for [`Show::Color`], `output` is `color` itself, or where a
+    /// step drawn into a lesson's own target is shown). Returns the encoder, for the caller to add
+    /// copies to and submit, with the frame's step names. Fails on a step past the end.
     pub fn record(
         &self,
         color: &wgpu::TextureView,
         stop: Stop,
+        show: Show,
+        output: &wgpu::TextureView,
     ) -> Result<(wgpu::CommandEncoder, Vec<&'static str>)> {
         self.update();
-        let frame = self.frame(color, stop.count(), None);
-        stop.resolve(&frame.steps)?;
-        Ok((frame.encoder, frame.steps))
+        let (mut shown, mut failure) = (false, None);
+        // A frame that stops after a step drawn into a lesson's own target shows that target.
+        let mut present =
+            |encoder: &mut wgpu::CommandEncoder, index, target: Option<&Offscreen>| {
+                if let (Some(target), Stop::After(number)) = (target, stop)
+                    && index + 1 == number
+                {
+                    shown = true;
+                    if let Err(error) = self.show_offscreen(encoder, show, target, output) {
+                        failure.get_or_insert(error);
+                    }
+                }
+            };
+        let frame = self.frame(color, stop.count(), Some(&mut present));
+        let (mut encoder, steps) = (frame.encoder, frame.steps);
+        if let Some(error) = failure {
+            return Err(error);
+        }
+        stop.resolve(&steps)?;
+        if !shown {
+            self.show(&mut encoder, show, output)?;
+        }
+        Ok((encoder, steps))
     }
 
-    /// Records the whole frame into `color`, calling `after_step` with the encoder after every
-    /// step: one frame that shows each step's buffers (`--film`).
+    /// Records the whole frame into `color`, calling `after_step` after every step: one frame that
+    /// shows each step's buffers (`--film`).
     pub fn record_each_step(
         &self,
         color: &wgpu::TextureView,
-        after_step: &mut dyn FnMut(&mut wgpu::CommandEncoder),
+        after_step: AfterStep<'_>,
     ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
         self.update();
         let frame = self.frame(color, usize::MAX, Some(after_step));
@@ -111,7 +134,7 @@ impl<L: Lesson> Runner<L> {
         &'f self,
         color: &'f wgpu::TextureView,
         stop: usize,
-        after_step: Option<&'f mut dyn FnMut(&mut wgpu::CommandEncoder)>,
+        after_step: Option<AfterStep<'f>>,
     ) -> Frame<'f> {
         let targets = (color, &self.depth_stencil);
         let scene = &self.scene;
@@ -155,6 +178,48 @@ impl<L: Lesson> Runner<L> {
                 views.show(device, encoder, target, &self.depth_stencil);
             }
         }
+        Ok(())
+    }
+
+    /// Paints `output` (any size) with one of the buffers of a lesson's own target: its colours, or
+    /// its depth or stencil buffer as [`Runner::show`] paints the frame's.
+    pub fn show_offscreen(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        show: Show,
+        target: &Offscreen,
+        output: &wgpu::TextureView,
+    ) -> Result<()> {
+        let device = &self.gpu.device;
+        if show == Show::Color {
+            self.scene
+                .blit
+                .draw(device, encoder, &target.color_view, output);
+            return Ok(());
+        }
+        let picture = crate::gpu::target_texture(
+            device,
+            "offscreen buffer picture",
+            self.scene.color_format,
+            target.size(),
+            wgpu::TextureUsages::TEXTURE_BINDING,
+        );
+        let picture = picture.create_view(&Default::default());
+        match show {
+            Show::Color => {}
+            Show::Depth | Show::RawDepth => {
+                let pipelines = self.scene.depth_view.as_ref();
+                let pipelines =
+                    pipelines.ok_or_else(|| anyhow::anyhow!(DepthViewPipelines::UNSUPPORTED))?;
+                let bind_group = pipelines.bind_group(device, &target.depth_stencil);
+                pipelines.show(encoder, &picture, &bind_group, show == Show::RawDepth);
+            }
+            Show::Stencil => {
+                let views = &self.scene.stencil_view;
+                views.show(device, encoder, &picture, &target.depth_stencil);
+            }
+        }
+        self.scene.blit.draw(device, encoder, &picture, output);
         Ok(())
     }
 

@@ -225,8 +225,7 @@ impl<L: Lesson> State<L> {
             label: Some("window frame view"),
             ..Default::default()
         });
-        let (mut encoder, _) = self.runner.record(&view, self.stop)?;
-        self.runner.show(&mut encoder, self.show, &view)?;
+        let (encoder, _) = self.runner.record(&view, self.stop, self.show, &view)?;
         self.runner.gpu.queue.submit([encoder.finish()]);
         self.window.pre_present_notify();
         self.runner.gpu.queue.present(frame);

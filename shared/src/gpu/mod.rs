@@ -281,6 +281,40 @@ impl DepthStencil {
     }
 }
 
+/// A render target of a lesson's own, at the size it chooses: a colour texture that shaders can
+/// sample and its own depth-stencil buffer (lesson 9's reflection texture). Steps draw into it with
+/// [`crate::Frame::step_into`].
+pub struct Offscreen {
+    pub color: wgpu::Texture,
+    pub color_view: wgpu::TextureView,
+    pub depth_stencil: DepthStencil,
+}
+
+impl Offscreen {
+    pub fn new(
+        device: &wgpu::Device,
+        label: &str,
+        format: wgpu::TextureFormat,
+        size: (u32, u32),
+    ) -> Self {
+        let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+        let color = target_texture(device, label, format, size, usage);
+        let color_view = color.create_view(&wgpu::TextureViewDescriptor {
+            label: Some(&format!("{label} view")),
+            ..Default::default()
+        });
+        Self {
+            color,
+            color_view,
+            depth_stencil: DepthStencil::new(device, size.0, size.1),
+        }
+    }
+
+    pub fn size(&self) -> (u32, u32) {
+        (self.color.width(), self.color.height())
+    }
+}
+
 /// A uniform buffer at `binding`, read by vertex and fragment shaders.
 pub fn uniform_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {

@@ -1,9 +1,13 @@
 //! What mirror lessons share: lesson 3's frame (the room as usual, then the mirror's visible pixels
-//! marked with 1 in the stencil buffer), which every lesson after it begins with, and the step that
-//! clears the depth behind a marked mirror.
+//! marked with 1 in the stencil buffer), which lessons 4-7 begin with; the step that clears the depth
+//! behind a marked mirror; and lesson 8's frame for a mirror in any plane, for the lessons after it.
 
+use crate::gpu::states::{self, Clip};
 use crate::lesson::Frame;
-use crate::{Gpu, Scene, gpu::states};
+use crate::math::reflect::Plane;
+use crate::room::mirror_world::MirrorWorld;
+use crate::room::scene::Drawable;
+use crate::{Gpu, Recipe, Scene};
 
 pub struct MarkedRoom {
     draw_room: wgpu::RenderPipeline,
@@ -89,5 +93,68 @@ impl ResetDepth {
         pass.set_pipeline(&self.pipeline);
         pass.set_stencil_reference(reference);
         pass.draw(0..3, 0..1);
+    }
+}
+
+/// Lesson 8's frame for a mirror in any plane, kept here for the lessons after it: mark the mirror's
+/// surface, reset the depth there if something stands behind it, draw its mirror world where the
+/// mark is (clipped at the plane), and blend the surface over it.
+pub struct StencilMirror {
+    mark: wgpu::RenderPipeline,
+    reset_depth: Option<ResetDepth>,
+    reflect: wgpu::RenderPipeline,
+    surface: wgpu::RenderPipeline,
+    world: MirrorWorld,
+}
+
+impl StencilMirror {
+    /// The mirror in `plane` showing `objects`, clipped as `clip` says; with `something_behind`, the
+    /// mark's depth is reset before the reflection.
+    pub fn new(
+        gpu: &Gpu,
+        scene: &Scene,
+        (plane, objects): (Plane, &[&Drawable]),
+        clip: Clip,
+        something_behind: bool,
+    ) -> Self {
+        let pipeline = |recipe: &Recipe| scene.pipeline(&gpu.device, recipe);
+        Self {
+            mark: pipeline(&states::MARK_MIRROR),
+            reset_depth: something_behind.then(|| ResetDepth::new(gpu, scene)),
+            reflect: pipeline(&Recipe {
+                clip,
+                ..states::CULL_CLOCKWISE
+            }),
+            surface: pipeline(&states::BLEND_OVER_MARK),
+            world: MirrorWorld::new(gpu, scene, plane, objects),
+        }
+    }
+
+    /// The mirror's steps, for its `surface` and the `objects` it was made with.
+    pub fn steps(&self, frame: &mut Frame<'_>, surface: &Drawable, objects: &[&Drawable]) {
+        self.world.update(frame, false);
+        frame.step("mark the mirror", |pass| {
+            pass.set_pipeline(&self.mark);
+            pass.set_stencil_reference(1);
+            surface.draw(pass);
+        });
+        if let Some(reset_depth) = &self.reset_depth {
+            frame.step("reset the depth in the mark", |pass| {
+                reset_depth.draw(pass, 1)
+            });
+        }
+        frame.step("draw the reflection", |pass| {
+            pass.set_pipeline(&self.reflect);
+            pass.set_stencil_reference(1);
+            self.world.bind(pass);
+            for object in objects {
+                self.world.draw(pass, object);
+            }
+        });
+        frame.step("draw the mirror's surface", |pass| {
+            pass.set_pipeline(&self.surface);
+            pass.set_stencil_reference(1);
+            surface.draw(pass);
+        });
     }
 }

@@ -17,7 +17,7 @@ pub mod steps;
 
 use anyhow::Result;
 
-use crate::gpu::{DepthStencil, Gpu};
+use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::{Knob, Knobs};
 use crate::lesson::steps::Show;
 use crate::room::camera::{BOOK_POSE, Camera, View};
@@ -62,9 +62,14 @@ pub struct Frame<'a> {
     pub(crate) steps: Vec<&'static str>,
     /// Steps after the first `stop` are named but not recorded.
     stop: usize,
-    /// Called after each recorded step, to look at the buffers mid-frame (`--film`).
-    after_step: Option<&'a mut dyn FnMut(&mut wgpu::CommandEncoder)>,
+    /// Called after each recorded step, to look at the buffers mid-frame (`--film`, a step drawn
+    /// into a lesson's own target).
+    after_step: Option<AfterStep<'a>>,
 }
+
+/// What the frame calls after each step it records: with the encoder, the step's index (from 0) and
+/// the lesson's own target the step drew into, if it did not draw into the frame's.
+pub type AfterStep<'a> = &'a mut dyn FnMut(&mut wgpu::CommandEncoder, usize, Option<&Offscreen>);
 
 impl<'a> Frame<'a> {
     /// A frame that records the first `stop` steps (all of them with `usize::MAX`), and calls
@@ -75,7 +80,7 @@ impl<'a> Frame<'a> {
         (camera, view): (Camera, View),
         (color, depth_stencil): (&'a wgpu::TextureView, &'a DepthStencil),
         stop: usize,
-        after_step: Option<&'a mut dyn FnMut(&mut wgpu::CommandEncoder)>,
+        after_step: Option<AfterStep<'a>>,
     ) -> Self {
         let encoder = gpu
             .device
@@ -96,17 +101,34 @@ impl<'a> Frame<'a> {
         }
     }
 
+    /// The size of the frame's targets, in pixels.
+    pub fn size(&self) -> (u32, u32) {
+        self.depth_stencil.size()
+    }
+
     // ANCHOR: steps
     /// The step "clear": colour to the sky, every depth to 1.0 (the far plane), every stencil
     /// value to 0.
     pub fn clear(&mut self) {
-        self.record(CLEAR, Start::Cleared, |_| {});
+        self.record(CLEAR, Start::Cleared, None, |_| {});
     }
 
     /// One named step: a render pass on the colour and depth-stencil targets, keeping what earlier
     /// steps drew, with the frame's camera and lights bound; `draw` records into it.
     pub fn step(&mut self, name: &'static str, draw: impl FnOnce(&mut wgpu::RenderPass<'_>)) {
-        self.record(name, Start::Kept, draw);
+        self.record(name, Start::Kept, None, draw);
+    }
+
+    /// One named step drawn into a target of the lesson's own (a reflection texture), cleared
+    /// first, with the frame's camera and lights bound. The window and the film show that target
+    /// when the frame stops after this step.
+    pub fn step_into(
+        &mut self,
+        name: &'static str,
+        target: &Offscreen,
+        draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
+    ) {
+        self.record(name, Start::Cleared, Some(target), draw);
     }
     // ANCHOR_END: steps
 
@@ -114,60 +136,24 @@ impl<'a> Frame<'a> {
         &mut self,
         name: &'static str,
         start: Start,
+        target: Option<&Offscreen>,
         draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
     ) {
         self.steps.push(name);
         if self.steps.len() > self.stop {
             return;
         }
-        let mut pass = self.pass(name, start);
+        let (color, depth_stencil) = match target {
+            Some(target) => (&target.color_view, &target.depth_stencil),
+            None => (self.color, self.depth_stencil),
+        };
+        let mut pass = pass(&mut self.encoder, name, start, color, depth_stencil);
+        self.scene.bind_frame(&mut pass);
         draw(&mut pass);
         drop(pass);
         if let Some(after_step) = &mut self.after_step {
-            after_step(&mut self.encoder);
+            after_step(&mut self.encoder, self.steps.len() - 1, target);
         }
-    }
-
-    /// Begins a render pass on the colour and depth-stencil targets, with the frame's camera and
-    /// lights bound.
-    fn pass(&mut self, label: &str, start: Start) -> wgpu::RenderPass<'_> {
-        let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::gpu::srgb_to_linear(c) as f64);
-        let (color, depth, stencil) = match start {
-            Start::Cleared => (
-                wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 }),
-                wgpu::LoadOp::Clear(1.0),
-                wgpu::LoadOp::Clear(0),
-            ),
-            Start::Kept => (wgpu::LoadOp::Load, wgpu::LoadOp::Load, wgpu::LoadOp::Load),
-        };
-        let mut pass = self.encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some(label),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: self.color,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: color,
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &self.depth_stencil.view,
-                depth_ops: Some(wgpu::Operations {
-                    load: depth,
-                    store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: Some(wgpu::Operations {
-                    load: stencil,
-                    store: wgpu::StoreOp::Store,
-                }),
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        self.scene.bind_frame(&mut pass);
-        pass
     }
 }
 
@@ -176,4 +162,49 @@ impl<'a> Frame<'a> {
 enum Start {
     Cleared,
     Kept,
+}
+
+/// Begins a render pass on these colour and depth-stencil targets.
+fn pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    start: Start,
+    color: &wgpu::TextureView,
+    depth_stencil: &DepthStencil,
+) -> wgpu::RenderPass<'e> {
+    let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::gpu::srgb_to_linear(c) as f64);
+    let (color_load, depth, stencil) = match start {
+        Start::Cleared => (
+            wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 }),
+            wgpu::LoadOp::Clear(1.0),
+            wgpu::LoadOp::Clear(0),
+        ),
+        Start::Kept => (wgpu::LoadOp::Load, wgpu::LoadOp::Load, wgpu::LoadOp::Load),
+    };
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: color,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations {
+                load: color_load,
+                store: wgpu::StoreOp::Store,
+            },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: &depth_stencil.view,
+            depth_ops: Some(wgpu::Operations {
+                load: depth,
+                store: wgpu::StoreOp::Store,
+            }),
+            stencil_ops: Some(wgpu::Operations {
+                load: stencil,
+                store: wgpu::StoreOp::Store,
+            }),
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
 }

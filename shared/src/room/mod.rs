@@ -8,3 +8,4 @@ pub mod mirror_world;
 pub mod scene;
 pub mod shapes;
 pub mod texture;
+pub mod texture_mirror;

@@ -395,6 +395,7 @@ pub struct Scene {
     /// `None` where shaders cannot read the depth buffer (the GL backend).
     pub(crate) depth_view: Option<crate::gpu::views::DepthViewPipelines>,
     pub(crate) stencil_view: crate::gpu::views::StencilViewPipeline,
+    pub(crate) blit: crate::gpu::views::Blit,
 }
 
 impl Scene {
@@ -619,6 +620,7 @@ impl Scene {
             clip_distances_shader,
             depth_view,
             stencil_view: crate::gpu::views::StencilViewPipeline::new(device, color_format),
+            blit: crate::gpu::views::Blit::new(device, color_format),
         })
     }
 
@@ -636,9 +638,46 @@ impl Scene {
             (Clip::Discard, _) => (&self.shader, "vs_main", "fs_discard"),
             _ => (&self.shader, "vs_main", "fs_main"),
         };
+        let stages = (module, vertex, fragment);
+        self.pipeline_from(device, recipe, &self.pipeline_layout, stages)
+    }
+
+    /// A pipeline for the room's objects with a bind group of the caller's own (group 2) and
+    /// fragment entry `fragment` of the scene's shader with `extra` WGSL appended.
+    pub(crate) fn extended_pipeline(
+        &self,
+        device: &wgpu::Device,
+        recipe: &Recipe,
+        (group, extra, fragment): (&wgpu::BindGroupLayout, &str, &str),
+    ) -> wgpu::RenderPipeline {
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(&format!("{} pipeline layout", recipe.name)),
+            bind_group_layouts: &[
+                Some(&self.frame_layout),
+                Some(&self.object_layout),
+                Some(group),
+            ],
+            immediate_size: 0,
+        });
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(&format!("scene.wgsl for {}", recipe.name)),
+            source: wgpu::ShaderSource::Wgsl(
+                format!("{}\n{extra}", include_str!("../shaders/scene.wgsl")).into(),
+            ),
+        });
+        self.pipeline_from(device, recipe, &layout, (&module, "vs_main", fragment))
+    }
+
+    fn pipeline_from(
+        &self,
+        device: &wgpu::Device,
+        recipe: &Recipe,
+        layout: &wgpu::PipelineLayout,
+        (module, vertex, fragment): (&wgpu::ShaderModule, &str, &str),
+    ) -> wgpu::RenderPipeline {
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(recipe.name),
-            layout: Some(&self.pipeline_layout),
+            layout: Some(layout),
             vertex: wgpu::VertexState {
                 module,
                 entry_point: Some(vertex),

@@ -11,6 +11,7 @@ mod floor_mirror;
 mod knobs;
 mod mark_mirror;
 mod reflect_skull;
+mod render_to_texture;
 mod screenshots;
 mod stencil_basics;
 mod steps;

@@ -1,0 +1,3 @@
+fn main() -> std::process::ExitCode {
+    workbook::main::<render_to_texture::RenderToTexture>()
+}
