@@ -44,14 +44,28 @@ pub struct MeshData {
 
 impl MeshData {
     /// Reads an OBJ file: every object in it, triangulated, as one mesh, centred on the origin and
-    /// scaled so that its largest side is 1. Vertex normals are computed when the file has none.
+    /// scaled so that its largest side is 1. Vertex normals are computed when the file has none, or one
+    /// that is zero or not finite; the file's others are normalised.
     pub fn load_obj(path: &Path) -> Result<Self> {
         let shown = path.display();
         let bytes = std::fs::read(path).with_context(|| format!("cannot read model `{shown}`"))?;
-        if std::str::from_utf8(&bytes).is_err() {
+        Self::parse_obj(&shown.to_string(), &bytes)
+    }
+
+    /// [`MeshData::load_obj`] on the text of an OBJ file already in memory; `name` names the model in
+    /// error messages (`load_obj` passes the file's path).
+    pub fn parse_obj(name: &str, bytes: &[u8]) -> Result<Self> {
+        let shown = name;
+        let Ok(text) = std::str::from_utf8(bytes) else {
             bail!("model `{shown}` is not an OBJ file: OBJ is text, this file is binary");
+        };
+        if let Some(line) = face_past_the_ends(text) {
+            bail!(
+                "model `{shown}` is not a valid OBJ file: the face on line {line} names a texture \
+                 coordinate or normal that is not there"
+            );
         }
-        let mut reader = std::io::BufReader::new(bytes.as_slice());
+        let mut reader = std::io::BufReader::new(bytes);
         let options = tobj::LoadOptions {
             single_index: true,
             triangulate: true,
@@ -104,11 +118,36 @@ impl MeshData {
         {
             bail!("model `{shown}` has coordinates that are not finite numbers");
         }
-        if !all_have_normals {
-            mesh.compute_normals();
+        if mesh
+            .vertices
+            .iter()
+            .flat_map(|v| v.uv)
+            .any(|c| !c.is_finite())
+        {
+            bail!("model `{shown}` has texture coordinates that are not finite numbers");
+        }
+        // The file's normals are used where they are of unit length and normalised where not; when
+        // one cannot be (zero, or not a finite number), all are computed as for a file without them.
+        let mut usable_normals = all_have_normals;
+        if all_have_normals {
+            for vertex in &mut mesh.vertices {
+                let normal = Vec3::from(vertex.normal);
+                let error = (normal.length() - 1.0).abs();
+                if error > 1e-3 || error.is_nan() {
+                    let Some(unit) = unit_length(normal) else {
+                        usable_normals = false;
+                        break;
+                    };
+                    vertex.normal = unit.into();
+                }
+            }
         }
         mesh.fit_unit_box()
             .with_context(|| format!("model `{shown}` cannot be placed"))?;
+        // After placing: in the unit box the edges' cross products neither overflow nor vanish.
+        if !usable_normals {
+            mesh.compute_normals();
+        }
         Ok(mesh)
     }
 
@@ -124,7 +163,7 @@ impl MeshData {
             }
         }
         for (vertex, sum) in self.vertices.iter_mut().zip(sums) {
-            vertex.normal = sum.normalize_or(Vec3::Y).into();
+            vertex.normal = unit_length(sum).unwrap_or(Vec3::Y).into();
         }
     }
 
@@ -132,13 +171,16 @@ impl MeshData {
     /// largest side is 1: a model far from the origin or of odd size still lands where the skull goes.
     pub fn fit_unit_box(&mut self) -> Result<()> {
         let (min, max) = self.bounds();
-        let extent = (max - min).max_element();
-        if !(extent > 1e-6 && extent.is_finite()) {
+        // In halves: `min + max` and `max - min` overflow for huge coordinates where these do not,
+        // and for others they are the same numbers (halving is exact).
+        let centre = min * 0.5 + max * 0.5;
+        let half_extent = (max * 0.5 - min * 0.5).max_element();
+        if !(half_extent > 0.5e-6 && half_extent.is_finite()) {
             bail!("all its vertices are at one point");
         }
-        let centre = (min + max) * 0.5;
         for vertex in &mut self.vertices {
-            vertex.position = ((Vec3::from(vertex.position) - centre) / extent).into();
+            let offset = Vec3::from(vertex.position) - centre;
+            vertex.position = (offset / half_extent * 0.5).into();
         }
         Ok(())
     }
@@ -200,6 +242,43 @@ impl MeshData {
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3
     }
+}
+
+/// `v` scaled to unit length, if it has a direction: divided by its largest component first, so that
+/// the squares of huge components do not overflow nor those of tiny ones lose their precision.
+fn unit_length(v: Vec3) -> Option<Vec3> {
+    (v / v.abs().max_element()).try_normalize()
+}
+
+/// The line (counted from 1) of the first face that names a texture coordinate or a normal before
+/// the first one or past 2³², if any. `tobj` turns such an index into a huge `usize` and multiplies it
+/// unchecked, which panics in a debug build (an optimised build refuses the face as out of bounds):
+/// `f 1/-2/1 ...` with fewer than two `vt` lines before it, for example.
+fn face_past_the_ends(text: &str) -> Option<usize> {
+    let (mut texcoords, mut normals) = (0i64, 0i64);
+    for (number, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("vt") => texcoords += 1,
+            Some("vn") => normals += 1,
+            // tobj reads `l` lines as it reads faces.
+            Some("f" | "l") => {
+                for corner in words {
+                    // v/vt/vn: tobj guards the vertex index itself, and refuses what does not parse.
+                    for (part, count) in corner.split('/').skip(1).zip([texcoords, normals]) {
+                        let Ok(index) = part.parse::<i64>() else {
+                            continue;
+                        };
+                        if index < -count || index > i64::from(u32::MAX) {
+                            return Some(number + 1);
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// A mesh in GPU buffers.

@@ -8,6 +8,7 @@ mod book;
 mod depth;
 mod drawing_order;
 mod floor_mirror;
+mod fuzz;
 mod knobs;
 mod mark_mirror;
 mod reflect_skull;
