@@ -139,6 +139,17 @@ fn no_adapter_and_no_display_say_what_to_do() {
         .assert_one_line_error("mesa-vulkan-drivers");
     run(exe(), &["--backend", "glide", "--screenshot", "x.png"])
         .assert_one_line_error("unknown backend");
+    // No Vulkan driver installed: the loader's own complaints stay quiet, our one line remains.
+    let no_driver = [
+        ("VK_DRIVER_FILES", "/nonexistent"),
+        ("VK_ICD_FILENAMES", "/nonexistent"),
+    ];
+    run_with(
+        exe(),
+        &["--backend", "vulkan", "--screenshot", "x.png"],
+        &no_driver,
+    )
+    .assert_one_line_error("mesa-vulkan-drivers");
     // No DISPLAY and no WAYLAND_DISPLAY: no window.
     run(exe(), &[]).assert_one_line_error("--screenshot");
     // A DISPLAY with no server behind it.

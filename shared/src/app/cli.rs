@@ -16,7 +16,6 @@ use crate::lesson::steps::{self, Show};
 /// The whole `main` of a lesson binary: parse, run, and turn any error into one line and exit code 1.
 pub fn main<L: Lesson>() -> ExitCode {
     quiet_mesa();
-    init_logging();
     quiet_panics(L::NAME);
     match run::<L>(std::env::args_os()) {
         Ok(()) => ExitCode::SUCCESS,
@@ -54,6 +53,7 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
             }
         }
     };
+    init_logging(args.verbose);
     if args.list_knobs {
         print!("{}", knobs::describe(L::KNOBS));
         return Ok(());
@@ -198,10 +198,15 @@ pub fn quiet_mesa() {
     }
 }
 
-/// Logs go to stderr; `RUST_LOG` picks the level (default: errors only, as wgpu warns a lot, and not
-/// the EGL probe's complaints on machines without GL).
-fn init_logging() {
-    let default = "error,wgpu_hal::gles::egl=off";
+/// Logs go to stderr; `RUST_LOG` picks the level. By default there are none: every failure the
+/// lesson knows of becomes its one line, and wgpu's own (the Vulkan loader's complaints on a machine
+/// without a driver, the EGL probe's without GL) would only bury it. `-v` shows wgpu's errors and
+/// warnings.
+fn init_logging(verbose: bool) {
+    let default = match verbose {
+        true => "warn,wgpu_hal::gles::egl=off",
+        false => "off",
+    };
     let _ = env_logger::Builder::from_env(env_logger::Env::default().default_filter_or(default))
         .format_timestamp(None)
         .try_init();
