@@ -73,10 +73,15 @@ impl Rect {
 
 /// The coordinates of the pixels whose error is visible.
 fn visible(errors: &[f32], width: u32) -> impl Iterator<Item = (u32, u32)> + '_ {
+    above(errors, width, VISIBLE)
+}
+
+/// The coordinates of the pixels whose error exceeds `threshold`.
+fn above(errors: &[f32], width: u32, threshold: f32) -> impl Iterator<Item = (u32, u32)> + '_ {
     errors
         .iter()
         .enumerate()
-        .filter(|(_, e)| **e > VISIBLE)
+        .filter(move |(_, e)| **e > threshold)
         .map(move |(i, _)| (i as u32 % width, i as u32 / width))
 }
 
@@ -89,12 +94,18 @@ fn visible(errors: &[f32], width: u32) -> impl Iterator<Item = (u32, u32)> + '_ 
 /// image; where the differences genuinely span the image, only the wider boxes reach the coverage, and
 /// the crop grows to match (up to the whole image).
 pub fn crop_box(errors: &[f32], width: u32, height: u32) -> Option<Rect> {
+    crop_box_above(errors, width, height, VISIBLE)
+}
+
+/// [`crop_box`] for the pixels whose error exceeds `threshold` instead of [`VISIBLE`]: for a pair
+/// whose difference is real but subtle everywhere (no single pixel visibly different).
+pub fn crop_box_above(errors: &[f32], width: u32, height: u32, threshold: f32) -> Option<Rect> {
     assert_eq!(
         errors.len(),
         width as usize * height as usize,
         "one error per pixel"
     );
-    let points: Vec<(u32, u32)> = visible(errors, width).collect();
+    let points: Vec<(u32, u32)> = above(errors, width, threshold).collect();
     if points.is_empty() {
         return None;
     }
@@ -234,6 +245,10 @@ pub fn outlined(difference: &image::RgbImage, rect: Rect) -> RgbaImage {
     image
 }
 
+/// A pixel error that a reader sees when told where to look: the crop's fallback for a wrong
+/// picture that differs subtly everywhere (planar-shadow's mirror without the shadow's image).
+pub const SUBTLE: f32 = 0.08;
+
 /// The zoom's crops come from renders this many times the book's size, so that the enlargement
 /// shows detail the renderer drew rather than blown-up pixels.
 pub const ZOOM_SCALE: u32 = 2;
@@ -266,9 +281,11 @@ impl Pair {
     pub fn make(&self) -> Result<PairImages> {
         let (wrong, right) = (Shot::named(self.wrong)?, Shot::named(self.right)?);
         let comparison = flip::compare(&right.render()?, &wrong.render()?)?;
-        let rect = crop_box(&comparison.errors, SIZE.0, SIZE.1).with_context(|| {
-            format!("{} does not differ visibly from {}", self.wrong, self.right)
-        })?;
+        // Where they differ visibly; for a subtle pair, where they differ most.
+        let rect = [VISIBLE, SUBTLE]
+            .iter()
+            .find_map(|&threshold| crop_box_above(&comparison.errors, SIZE.0, SIZE.1, threshold))
+            .with_context(|| format!("{} does not differ from {}", self.wrong, self.right))?;
         let large = (SIZE.0 * ZOOM_SCALE, SIZE.1 * ZOOM_SCALE);
         let (right_large, wrong_large) = (right.render_at(large)?, wrong.render_at(large)?);
         Ok(PairImages {

@@ -270,6 +270,96 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "planar-shadow",
+        lesson: "planar-shadow",
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-double-blend",
+        lesson: "planar-shadow",
+        settings: &["no-double-blend=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-point",
+        lesson: "planar-shadow",
+        settings: &["light=point"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-spot",
+        lesson: "planar-shadow",
+        settings: &["light=spot"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-unreflected",
+        lesson: "planar-shadow",
+        settings: &["reflect-shadow=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-no-masks",
+        lesson: "planar-shadow",
+        settings: &["masks=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-z-fighting",
+        lesson: "planar-shadow",
+        settings: &["lift=none"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-depth-bias",
+        lesson: "planar-shadow",
+        settings: &["lift=depth-bias"],
+        ..SHOT
+    },
+    Shot {
+        name: "planar-shadow-stencil",
+        lesson: "planar-shadow",
+        show: Some(Show::Stencil),
+        step: Some("draw the reflected shadow"),
+        ..SHOT
+    },
+    Shot {
+        name: "two-mirrors",
+        lesson: "two-mirrors",
+        ..SHOT
+    },
+    Shot {
+        name: "two-mirrors-depth-1",
+        lesson: "two-mirrors",
+        settings: &["depth=1"],
+        ..SHOT
+    },
+    Shot {
+        name: "two-mirrors-depth-6",
+        lesson: "two-mirrors",
+        settings: &["depth=6"],
+        ..SHOT
+    },
+    Shot {
+        name: "two-mirrors-stencil",
+        lesson: "two-mirrors",
+        settings: &["depth=6"],
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
+        name: "two-mirrors-replace",
+        lesson: "two-mirrors",
+        settings: &["mark=replace"],
+        ..SHOT
+    },
+    Shot {
+        name: "two-mirrors-always-flipped",
+        lesson: "two-mirrors",
+        settings: &["winding=always-flipped"],
+        ..SHOT
+    },
+    Shot {
         name: "floor-mirror-reflection-depth",
         lesson: "floor-mirror",
         settings: &["sink=2", "clip=discard"],
@@ -352,6 +442,30 @@ pub const PAIRS: &[Pair] = &[
     Pair {
         wrong: "render-to-texture-unclipped",
         right: "render-to-texture-sunk",
+    },
+    Pair {
+        wrong: "planar-shadow-double-blend",
+        right: "planar-shadow",
+    },
+    Pair {
+        wrong: "planar-shadow-no-masks",
+        right: "planar-shadow",
+    },
+    Pair {
+        wrong: "planar-shadow-unreflected",
+        right: "planar-shadow",
+    },
+    Pair {
+        wrong: "planar-shadow-z-fighting",
+        right: "planar-shadow",
+    },
+    Pair {
+        wrong: "two-mirrors-replace",
+        right: "two-mirrors",
+    },
+    Pair {
+        wrong: "two-mirrors-always-flipped",
+        right: "two-mirrors",
     },
 ];
 
@@ -440,6 +554,8 @@ pub const LESSONS: &[&str] = &[
     "drawing-order",
     "floor-mirror",
     "render-to-texture",
+    "planar-shadow",
+    "two-mirrors",
 ];
 
 /// Something to do with a lesson's type, given its package name: see [`for_lesson`].
@@ -460,6 +576,8 @@ pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
         "drawing-order" => task.run::<drawing_order::DrawingOrder>(),
         "floor-mirror" => task.run::<floor_mirror::FloorMirror>(),
         "render-to-texture" => task.run::<render_to_texture::RenderToTexture>(),
+        "planar-shadow" => task.run::<planar_shadow::PlanarShadow>(),
+        "two-mirrors" => task.run::<two_mirrors::TwoMirrors>(),
         other => bail!("there is no lesson called `{other}`"),
     })
 }

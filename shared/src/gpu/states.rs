@@ -33,6 +33,9 @@ pub struct Recipe {
     pub color_writes: ColorWrites,
     /// Whether, and how, fragments behind the frame's clip plane are thrown away (lesson 8).
     pub clip: Clip,
+    /// Added to each fragment's depth before the test: a constant (in the depth format's smallest
+    /// steps) and a multiple of the triangle's depth slope (lesson 10's shadow on the floor).
+    pub depth_bias: wgpu::DepthBiasState,
 }
 // ANCHOR_END: recipe
 
@@ -73,6 +76,11 @@ pub const OPAQUE: Recipe = Recipe {
     blend: None,
     color_writes: ColorWrites::ALL,
     clip: Clip::None,
+    depth_bias: wgpu::DepthBiasState {
+        constant: 0,
+        slope_scale: 0.0,
+        clamp: 0.0,
+    },
 };
 // ANCHOR_END: opaque
 
@@ -204,6 +212,67 @@ pub const RESET_DEPTH: Recipe = Recipe {
 };
 // ANCHOR_END: reset_depth
 
+// ANCHOR: shadow
+/// A planar shadow: the object flattened onto a plane by the shadow matrix, black at 50%, blended
+/// over what is there; no depth writes, both sides drawn. Every layer of the flattened object
+/// darkens again where layers overlap.
+pub const SHADOW: Recipe = Recipe {
+    name: "SHADOW",
+    depth_write: false,
+    cull_mode: None,
+    ..TRANSPARENT
+};
+
+/// SHADOW blended once per pixel (MKXJun's `DSSNoDoubleBlend`): the stencil test passes where the
+/// value equals the reference, 0, and increments it, so the next layer at that pixel fails.
+pub const NO_DOUBLE_BLEND: Recipe = Recipe {
+    name: "NO_DOUBLE_BLEND",
+    stencil: StencilState {
+        front: INCREMENT_IF_EQUAL,
+        back: INCREMENT_IF_EQUAL,
+        read_mask: 0xff,
+        write_mask: 0xff,
+    },
+    ..SHADOW
+};
+
+/// The stencil test passes where the value equals the reference, and increments it there.
+const INCREMENT_IF_EQUAL: StencilFaceState = StencilFaceState {
+    compare: CompareFunction::Equal,
+    fail_op: StencilOperation::Keep,
+    depth_fail_op: StencilOperation::Keep,
+    pass_op: StencilOperation::IncrementClamp,
+};
+// ANCHOR_END: shadow
+
+// ANCHOR: masks
+/// The shadow seen in the mirror: the stencil holds two things at once, the mirror's mark in bit 0
+/// and "shadow drawn here" in bit 1. Reference 1 and read mask 0b11: pass where the mark is set and
+/// the shadow bit is not; increment (1 + 1 = 2) through write mask 0b10: set the shadow bit, leave
+/// the mark.
+pub const REFLECTED_NO_DOUBLE_BLEND: Recipe = Recipe {
+    name: "REFLECTED_NO_DOUBLE_BLEND",
+    stencil: StencilState {
+        front: INCREMENT_IF_EQUAL,
+        back: INCREMENT_IF_EQUAL,
+        read_mask: 0b11,
+        write_mask: 0b10,
+    },
+    ..SHADOW
+};
+
+/// BLEND_OVER_MARK reading the mark's bit only (read mask 0b01): a pixel of the mirror where a
+/// shadow also set bit 1 holds 3, which is still "marked".
+pub const BLEND_OVER_MARK_BIT: Recipe = Recipe {
+    name: "BLEND_OVER_MARK_BIT",
+    stencil: StencilState {
+        read_mask: 0b01,
+        ..DRAW_REFLECTION.stencil
+    },
+    ..BLEND_OVER_MARK
+};
+// ANCHOR_END: masks
+
 // ANCHOR: spe_reflection
 /// SPE's first floor mirror (OpenGL): the reflection drawn with no stencil, the depth test off, and
 /// mixed at a constant 40% over what is there — `glBlendColor(0, 0, 0, 0.4)` with
@@ -244,7 +313,7 @@ impl Recipe {
             depth_write_enabled: Some(self.depth_write),
             depth_compare: Some(self.depth_compare),
             stencil: self.stencil.clone(),
-            bias: wgpu::DepthBiasState::default(),
+            bias: self.depth_bias,
         }
     }
 }

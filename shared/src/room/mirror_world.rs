@@ -14,16 +14,30 @@ use crate::room::scene::{Drawable, FrameBinding, LIGHTS, Light, Placed, Scene};
 pub struct MirrorWorld {
     /// The mirror's plane, its front facing the room (where the camera is).
     pub plane: Plane,
-    /// The reflection in that plane.
+    /// The reflection in that plane (or several composed, for a mirror seen in a mirror).
     pub reflection: Mat4,
     frame: FrameBinding,
     images: Vec<Placed>,
+    /// The lights of the room it mirrors (the scene's own unless a lesson says otherwise).
+    room_lights: [Light; 3],
 }
 
 impl MirrorWorld {
     /// The mirror images of `objects` in `plane`, placed where they stand now.
     pub fn new(gpu: &Gpu, scene: &Scene, plane: Plane, objects: &[&Drawable]) -> Self {
-        let reflection = reflection(plane);
+        Self::seen_through(gpu, scene, (reflection(plane), plane), objects)
+    }
+
+    /// The mirror images of `objects` under any `reflection` — several composed, for a mirror seen
+    /// in a mirror (lesson 11) — seen through the mirror in plane `portal` (in the world, its front
+    /// towards the viewer), which clips them.
+    pub fn seen_through(
+        gpu: &Gpu,
+        scene: &Scene,
+        (reflection, portal): (Mat4, Plane),
+        objects: &[&Drawable],
+    ) -> Self {
+        let plane = portal;
         let device = &gpu.device;
         let images = objects
             .iter()
@@ -34,15 +48,19 @@ impl MirrorWorld {
             reflection,
             frame: scene.frame_binding(device, "mirror world frame"),
             images,
+            room_lights: LIGHTS,
         }
     }
 
-    /// The lights as the mirror world sees them: each direction reflected.
+    /// Lights the room with other lights than the scene's (the mirror world reflects them).
+    pub fn set_room_lights(&mut self, lights: [Light; 3]) {
+        self.room_lights = lights;
+    }
+
+    /// The lights as the mirror world sees them: each one reflected.
     pub fn lights(&self) -> [Light; 3] {
-        LIGHTS.map(|light| Light {
-            direction: self.reflection.transform_vector3(light.direction),
-            ..light
-        })
+        self.room_lights
+            .map(|light| light.reflected(self.reflection))
     }
 
     /// The side of the mirror's plane the mirror world lies on, as a plane whose front it is: what

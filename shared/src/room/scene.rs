@@ -16,6 +16,7 @@ use wgpu::util::DeviceExt;
 use crate::Gpu;
 use crate::gpu::states::{Clip, Recipe};
 use crate::math::reflect::{Plane, normal_matrix, reflection};
+use crate::math::shadow::LightSource;
 use crate::room::camera::{FAR, NEAR, View};
 use crate::room::mesh::{GpuMesh, MeshData, Vertex};
 use crate::room::texture;
@@ -95,6 +96,15 @@ pub const FLOOR_MIRROR_MATERIAL: Material = Material {
     diffuse: Vec3::new(0.35, 0.38, 0.42),
     ..ROOM_MATERIAL
 };
+/// A planar shadow: black, at 50%.
+pub const SHADOW_MATERIAL: Material = Material {
+    ambient: Vec3::ZERO,
+    diffuse: Vec3::ZERO,
+    alpha: 0.5,
+    specular: Vec3::ZERO,
+    shininess: 1.0,
+    alpha_cutoff: 0.0,
+};
 /// Water lets half the light through.
 pub const WATER_MATERIAL: Material = Material {
     alpha: 0.5,
@@ -109,33 +119,69 @@ pub const FENCE_MATERIAL: Material = Material {
     ..ROOM_MATERIAL
 };
 
-/// A directional light, as Luna's `DirectionalLight`.
+/// A light, as Luna's `DirectionalLight`, `PointLight` and `SpotLight`.
 #[derive(Debug, Clone, Copy)]
 pub struct Light {
-    /// The direction the light travels.
-    pub direction: Vec3,
+    /// The direction the light travels, or where it is.
+    pub source: LightSource,
+    /// A spot light's cone, around its axis.
+    pub spot: Option<Spot>,
     pub ambient: Vec3,
     pub diffuse: Vec3,
     pub specular: Vec3,
 }
 
+/// A spot light's cone: light leaves along `axis`, fading out at the angle whose cosine is
+/// `cos_cutoff`.
+#[derive(Debug, Clone, Copy)]
+pub struct Spot {
+    pub axis: Vec3,
+    pub cos_cutoff: f32,
+}
+
+// ANCHOR: light_reflected
+impl Light {
+    /// The light as the mirror world sees it: a position goes through the reflection as a point;
+    /// a direction, and a spot's axis, as vectors (no translation).
+    pub fn reflected(&self, reflection: Mat4) -> Light {
+        Light {
+            source: self.source.reflected(reflection),
+            spot: self.spot.map(|spot| Spot {
+                axis: reflection.transform_vector3(spot.axis),
+                ..spot
+            }),
+            ..*self
+        }
+    }
+}
+// ANCHOR_END: light_reflected
+
 /// Luna's three lights (a key light from the front right, a fill from the front left, a back light),
 /// with z negated: his room lies on −z in a left-handed frame, ours on +z in a right-handed one.
 pub const LIGHTS: [Light; 3] = [
     Light {
-        direction: Vec3::new(0.577_35, -0.577_35, -0.577_35),
+        source: LightSource::Directional {
+            direction: Vec3::new(0.577_35, -0.577_35, -0.577_35),
+        },
+        spot: None,
         ambient: Vec3::splat(0.2),
         diffuse: Vec3::splat(0.5),
         specular: Vec3::splat(0.5),
     },
     Light {
-        direction: Vec3::new(-0.577_35, -0.577_35, -0.577_35),
+        source: LightSource::Directional {
+            direction: Vec3::new(-0.577_35, -0.577_35, -0.577_35),
+        },
+        spot: None,
         ambient: Vec3::ZERO,
         diffuse: Vec3::splat(0.2),
         specular: Vec3::splat(0.25),
     },
     Light {
-        direction: Vec3::new(0.0, -FRAC_1_SQRT_2, FRAC_1_SQRT_2),
+        source: LightSource::Directional {
+            direction: Vec3::new(0.0, -FRAC_1_SQRT_2, FRAC_1_SQRT_2),
+        },
+        spot: None,
         ambient: Vec3::ZERO,
         diffuse: Vec3::splat(0.2),
         specular: Vec3::ZERO,
@@ -145,10 +191,13 @@ pub const LIGHTS: [Light; 3] = [
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 struct LightUniform {
-    direction: Vec4,
+    /// w = 0: xyz is the direction the light travels; w = 1: xyz is where it is.
+    position: Vec4,
     ambient: Vec4,
     diffuse: Vec4,
     specular: Vec4,
+    /// A spot's axis (xyz) and the cosine of its cut-off angle (w); w = -2: no spot.
+    spot: Vec4,
 }
 
 #[repr(C)]
@@ -175,10 +224,16 @@ impl FrameBinding {
             view_projection: view.view_projection(),
             eye: view.eye.extend(view.aspect()),
             lights: lights.map(|light| LightUniform {
-                direction: light.direction.extend(0.0),
+                position: match light.source {
+                    LightSource::Directional { direction } => direction.extend(0.0),
+                    LightSource::Point { position } => position.extend(1.0),
+                },
                 ambient: light.ambient.extend(1.0),
                 diffuse: light.diffuse.extend(1.0),
                 specular: light.specular.extend(1.0),
+                spot: light.spot.map_or(Vec4::new(0.0, 0.0, 0.0, -2.0), |s| {
+                    s.axis.extend(s.cos_cutoff)
+                }),
             }),
             clip_plane,
         };
@@ -722,10 +777,31 @@ impl Scene {
     /// The object placed by another world matrix (a mirror image in another plane, say), as a bind
     /// group of its own: draw it with [`Drawable::draw_placed`].
     pub fn placed(&self, device: &wgpu::Device, object: &Drawable, world: Mat4) -> Placed {
+        self.placed_as(device, object, world, None)
+    }
+
+    /// [`Scene::placed`], made of another material: a shadow is the skull in black at 50%. A world
+    /// matrix that flattens the object (a shadow matrix, determinant 0) has no normals to carry:
+    /// they are left as they are, and the material should not need them.
+    pub fn placed_as(
+        &self,
+        device: &wgpu::Device,
+        object: &Drawable,
+        world: Mat4,
+        material: Option<Material>,
+    ) -> Placed {
+        let own = object.uniforms[0].1.get();
+        let normal_matrix = match world.determinant().abs() > 1e-6 {
+            true => normal_matrix(world),
+            false => Mat4::IDENTITY,
+        };
         let uniform = ObjectUniform {
             world,
-            normal_matrix: normal_matrix(world),
-            ..object.uniforms[0].1.get()
+            normal_matrix,
+            ambient: material.map_or(own.ambient, |m| m.ambient.extend(1.0)),
+            diffuse: material.map_or(own.diffuse, |m| m.diffuse.extend(m.alpha)),
+            specular: material.map_or(own.specular, |m| m.specular.extend(m.shininess)),
+            ..own
         };
         let label = format!("{} placed", object.name);
         let (layout, sampler) = (&self.object_layout, &self.sampler);
@@ -776,15 +852,11 @@ pub fn reflected_world(world: Mat4) -> Mat4 {
 // ANCHOR_END: reflected_world
 
 // ANCHOR: reflected_lights
-/// The lights as the mirror world sees them: each direction reflected too. Without this the mirror
-/// image would be lit from the wrong side (a key light from the front right would light the image's
-/// front right, which faces away from the light).
+/// The lights as the mirror world sees them: each one reflected too ([`Light::reflected`]). Without
+/// this the mirror image would be lit from the wrong side (a key light from the front right would
+/// light the image's front right, which faces away from the light).
 pub fn reflected_lights() -> [Light; 3] {
-    let r = mirror_reflection();
-    LIGHTS.map(|light| Light {
-        direction: r.transform_vector3(light.direction),
-        ..light
-    })
+    LIGHTS.map(|light| light.reflected(mirror_reflection()))
 }
 // ANCHOR_END: reflected_lights
 

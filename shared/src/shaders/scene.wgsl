@@ -1,11 +1,15 @@
-// The room's one shader: Blinn-Phong lighting from three directional lights, as in Luna's demos.
+// The room's one shader: Blinn-Phong lighting from three lights (directional, point or spot), as in
+// Luna's demos.
 
 struct Light {
-    // The direction the light travels, in world space (w unused).
-    direction: vec4<f32>,
+    // w = 0: xyz is the direction the light travels (a directional light); w = 1: xyz is where the
+    // light is (a point or spot light), in world space.
+    position: vec4<f32>,
     ambient: vec4<f32>,
     diffuse: vec4<f32>,
     specular: vec4<f32>,
+    // A spot light's axis (xyz) and the cosine of its cut-off angle (w); w = -2 for other lights.
+    spot: vec4<f32>,
 };
 
 struct Frame {
@@ -92,14 +96,27 @@ fn shade(in: VertexOut) -> vec4<f32> {
     var specular = vec3<f32>(0.0);
     for (var i = 0; i < 3; i += 1) {
         let light = frame.lights[i];
-        let to_light = -normalize(light.direction.xyz);
+        var to_light = -normalize(light.position.xyz);
+        var strength = 1.0;
+        if light.position.w > 0.5 {
+            // A point light: from where it is, fading with the distance (Luna's 1 / (a0 + a2 d²)).
+            let offset = light.position.xyz - in.world_position;
+            to_light = normalize(offset);
+            strength = 1.0 / (1.0 + 0.01 * dot(offset, offset));
+            // A spot light: only inside its cone, the edge softened over a few degrees.
+            let cut_off = light.spot.w;
+            if cut_off > -1.5 {
+                let along = dot(-to_light, normalize(light.spot.xyz));
+                strength *= smoothstep(cut_off, cut_off + 0.03, along);
+            }
+        }
         ambient += object.ambient.rgb * light.ambient.rgb;
         let lambert = max(dot(n, to_light), 0.0);
         if lambert > 0.0 {
-            diffuse += lambert * object.diffuse.rgb * light.diffuse.rgb;
+            diffuse += strength * lambert * object.diffuse.rgb * light.diffuse.rgb;
             let halfway = normalize(to_light + to_eye);
             let highlight = pow(max(dot(n, halfway), 0.0), object.specular.a);
-            specular += highlight * object.specular.rgb * light.specular.rgb;
+            specular += strength * highlight * object.specular.rgb * light.specular.rgb;
         }
     }
     return vec4<f32>(texel.rgb * (ambient + diffuse) + specular, alpha);
