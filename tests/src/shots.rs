@@ -281,6 +281,13 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "planar-shadow-wall",
+        lesson: "planar-shadow",
+        settings: &["surface=wall", "light=point"],
+        camera: Some("-20,15,10"),
+        ..SHOT
+    },
+    Shot {
         name: "planar-shadow-point",
         lesson: "planar-shadow",
         settings: &["light=point"],

@@ -64,6 +64,12 @@ pub const KNOBS: &[Knob] = &[
         meaning: "whether the glass reads only the mark's bit (read mask 0b01), not the shadow's too",
     },
     Knob {
+        name: "surface",
+        values: &["floor", "wall"],
+        default: "floor",
+        meaning: "where the shadow falls: on the floor, or on the wall (the key light then comes from low in front)",
+    },
+    Knob {
         name: "lift",
         values: &["offset", "depth-bias", "none"],
         default: "offset",
@@ -73,12 +79,21 @@ pub const KNOBS: &[Knob] = &[
 // ANCHOR_END: knobs
 
 // ANCHOR: lights
-/// The key light the `light` knob chooses. The point and the spot stand where Luna's directional
-/// light comes from, 4.5 m from the skull; the spot aims at the skull with a 25° cone.
-pub fn key_light(name: &str) -> Light {
-    let from = SKULL_CENTRE + Vec3::new(2.6, 2.6, 2.6);
-    let source = match name {
-        "directional" => return LIGHTS[0],
+/// The key light the `light` knob chooses, for a shadow on the floor or the wall. For the floor the
+/// point and the spot stand where Luna's directional light comes from, 4.5 m from the skull; for the
+/// wall all three come from low in front and to the right, so that the shadow falls on the bricks
+/// left of the mirror. The spot aims at the skull with a 25° cone.
+pub fn key_light(name: &str, surface: &str) -> Light {
+    let offset = match surface {
+        "wall" => Vec3::new(3.5, 0.6, 3.5),
+        _ => Vec3::new(2.6, 2.6, 2.6),
+    };
+    let from = SKULL_CENTRE + offset;
+    let source = match (name, surface) {
+        ("directional", "wall") => LightSource::Directional {
+            direction: -offset.normalize(),
+        },
+        ("directional", _) => return LIGHTS[0],
         _ => LightSource::Point { position: from },
     };
     let spot = (name == "spot").then(|| Spot {
@@ -96,18 +111,20 @@ pub fn key_light(name: &str) -> Light {
 // ANCHOR_END: lights
 
 // ANCHOR: shadow
-/// The floor's plane, y = 0, facing up.
-pub fn floor_plane() -> Plane {
-    Plane::new(Vec3::Y, 0.0)
+/// The plane the shadow falls on: the floor, y = 0, facing up, or the wall's face, z = 0.
+pub fn shadow_plane(surface: &str) -> Plane {
+    match surface {
+        "wall" => mirror_plane(),
+        _ => Plane::new(Vec3::Y, 0.0),
+    }
 }
 
-/// Where the shadow is drawn: the skull flattened onto the floor along the key light's rays, then
-/// lifted 1 cm so that it lies in front of the floor it darkens (unless `lift` is not `offset`).
-pub fn shadow_world(skull: Mat4, light: &Light, lift: &str) -> Mat4 {
-    let up = if lift == "offset" { 0.01 } else { 0.0 };
-    Mat4::from_translation(Vec3::new(0.0, up, 0.0))
-        * shadow_matrix(floor_plane(), light.source)
-        * skull
+/// Where the shadow is drawn: the skull flattened onto the plane along the key light's rays, then
+/// lifted 1 cm off it, along its normal, so that it lies in front of the surface it darkens (unless
+/// `lift` is not `offset`).
+pub fn shadow_world(skull: Mat4, light: &Light, plane: Plane, lift: &str) -> Mat4 {
+    let lift = if lift == "offset" { 0.01 } else { 0.0 };
+    Mat4::from_translation(plane.normal * lift) * shadow_matrix(plane, light.source) * skull
 }
 // ANCHOR_END: shadow
 
@@ -175,14 +192,18 @@ impl Lesson for PlanarShadow {
         let device = &gpu.device;
         // Clearer glass than lesson 6's, so that the shadow's image shows through it.
         scene.mirror.set_alpha(&gpu.queue, GLASS_ALPHA);
-        let key = key_light(knobs.get("light"));
+        let surface = knobs.get("surface");
+        let key = key_light(knobs.get("light"), surface);
         let lights = [key, LIGHTS[1], LIGHTS[2]];
-        let world = shadow_world(scene.skull.world(), &key, knobs.get("lift"));
+        let plane = shadow_plane(surface);
+        let world = shadow_world(scene.skull.world(), &key, plane, knobs.get("lift"));
         let shadow = scene.placed_as(device, &scene.skull, world, Some(SHADOW_MATERIAL));
         let mut mirror_world = MirrorWorld::new(gpu, scene, mirror_plane(), &[&scene.skull]);
         mirror_world.set_room_lights(lights);
-        // The shadow's own mirror image: the shadow (made by the real light) reflected.
-        let reflected_shadow = knobs.is_on("reflect-shadow").then(|| {
+        // The shadow's own mirror image: the shadow (made by the real light) reflected. (A shadow
+        // on the wall lies in the mirror's own plane: its image is itself.)
+        let reflect = knobs.is_on("reflect-shadow") && surface == "floor";
+        let reflected_shadow = reflect.then(|| {
             let image = mirror_world.reflection * world;
             scene.placed_as(device, &scene.skull, image, Some(SHADOW_MATERIAL))
         });

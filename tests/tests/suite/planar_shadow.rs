@@ -90,7 +90,7 @@ fn the_outline_is_the_silhouette_cast_by_the_light() {
             [corner(t[0]), corner(t[1]), corner(t[2])]
         })
         .collect();
-    let light = key_light("directional");
+    let light = key_light("directional", "floor");
     let LightSource::Directional { direction } = light.source else {
         unreachable!()
     };
@@ -168,25 +168,27 @@ fn ray_hits(origin: Vec3, direction: Vec3, [a, b, c]: &[Vec3; 3]) -> bool {
 fn the_mirror_world_is_lit_by_the_lights_reflected() {
     let r = mirror_reflection();
     for name in ["directional", "point", "spot"] {
-        let light = key_light(name);
-        let mirrored = light.reflected(r);
-        match (light.source, mirrored.source) {
-            (LightSource::Point { position: p }, LightSource::Point { position: q }) => {
-                assert!(q.abs_diff_eq(r.transform_point3(p), 1e-5), "{name}")
+        for surface in ["floor", "wall"] {
+            let light = key_light(name, surface);
+            let mirrored = light.reflected(r);
+            match (light.source, mirrored.source) {
+                (LightSource::Point { position: p }, LightSource::Point { position: q }) => {
+                    assert!(q.abs_diff_eq(r.transform_point3(p), 1e-5), "{name}")
+                }
+                (
+                    LightSource::Directional { direction: d },
+                    LightSource::Directional { direction: e },
+                ) => {
+                    assert!(e.abs_diff_eq(r.transform_vector3(d), 1e-6), "{name}")
+                }
+                _ => panic!("{name}: a reflected light changed its kind"),
             }
-            (
-                LightSource::Directional { direction: d },
-                LightSource::Directional { direction: e },
-            ) => {
-                assert!(e.abs_diff_eq(r.transform_vector3(d), 1e-6), "{name}")
+            if let (Some(spot), Some(image)) = (light.spot, mirrored.spot) {
+                assert!(image.axis.abs_diff_eq(r.transform_vector3(spot.axis), 1e-6));
+                assert_eq!(image.cos_cutoff, spot.cos_cutoff);
             }
-            _ => panic!("{name}: a reflected light changed its kind"),
+            assert_eq!(light.spot.is_some(), name == "spot");
         }
-        if let (Some(spot), Some(image)) = (light.spot, mirrored.spot) {
-            assert!(image.axis.abs_diff_eq(r.transform_vector3(spot.axis), 1e-6));
-            assert_eq!(image.cos_cutoff, spot.cos_cutoff);
-        }
-        assert_eq!(light.spot.is_some(), name == "spot");
     }
 }
 
