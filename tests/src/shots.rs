@@ -601,6 +601,27 @@ pub fn knobs(lesson: &str) -> Result<&'static [workbook::Knob]> {
     for_lesson(lesson, Knobs)
 }
 
+/// Every value of every knob of a lesson, one knob at a time, as `--set` settings. Of the 256
+/// values of a byte knob (a stencil reference or mask) it takes the ones at the edges and a few
+/// between: they all run the same code, and 768 renders would cost minutes on a software GPU.
+pub fn every_knob_value(lesson: &str) -> Result<Vec<Vec<String>>> {
+    let mut each = Vec::new();
+    for knob in knobs(lesson)? {
+        let values: Vec<&str> = if knob.values.len() > 16 {
+            [0, 1, 2, 15, 16, 127, 128, 254, 255]
+                .iter()
+                .filter_map(|&i| knob.values.get(i).copied())
+                .collect()
+        } else {
+            knob.values.to_vec()
+        };
+        for value in values {
+            each.push(vec![format!("{}={value}", knob.name)]);
+        }
+    }
+    Ok(each)
+}
+
 /// Renders lesson `lesson` headless with these knob settings, after `adjust` changed the request.
 pub fn render(
     lesson: &str,

@@ -126,6 +126,35 @@ fn a_corrupt_texture_is_refused() {
     .assert_one_line_error("bricks.png` is not a valid PNG");
 }
 
+/// A full disk: one clear line, and the screenshot that was there before is still whole (the PNG is
+/// written beside it and renamed into place only when complete). Needs a small tmpfs, which only
+/// root may mount: skipped with a message where it cannot be made.
+#[test]
+fn a_full_disk_gives_one_line_and_keeps_the_old_screenshot() {
+    let disk = scratch("full-disk");
+    std::fs::create_dir_all(&disk).unwrap();
+    let mounted = std::process::Command::new("mount")
+        .args(["-t", "tmpfs", "-o", "size=48k", "tmpfs"])
+        .arg(&disk)
+        .status()
+        .is_ok_and(|status| status.success());
+    if !mounted {
+        eprintln!("skipped: cannot mount a small tmpfs here (needs root)");
+        return;
+    }
+    let shot = disk.join("shot.png");
+    let shot_arg = shot.to_str().unwrap();
+    run(exe(), &["--size", "64x36", "--screenshot", shot_arg]).assert_clean_success();
+    let before = std::fs::read(&shot).unwrap();
+    let full = run(exe(), &["--size", "1280x720", "--screenshot", shot_arg]);
+    let after = std::fs::read(&shot).unwrap_or_default();
+    let leftovers = std::fs::read_dir(&disk).unwrap().count();
+    let _ = std::process::Command::new("umount").arg(&disk).status();
+    full.assert_one_line_error("No space left on device");
+    assert_eq!(before, after, "the old screenshot was damaged");
+    assert_eq!(leftovers, 1, "a partial file was left behind");
+}
+
 #[test]
 fn an_unwritable_screenshot_path_is_refused() {
     run(exe(), &["--screenshot", "/no/such/folder/out.png"])

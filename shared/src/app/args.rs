@@ -51,7 +51,8 @@ pub struct Args {
     /// Show this OBJ model instead of the skull (placed and scaled to fit).
     #[arg(long, value_name = "PATH")]
     pub model: Option<PathBuf>,
-    /// Close the window by itself after this many frames (for smoke tests).
+    /// Close the window by itself after this many frames; with --screenshot, render this many frames
+    /// and write the last (a soak test).
     #[arg(long, value_name = "N")]
     pub frames: Option<u64>,
     /// GPU backend: vulkan or gl (also metal, dx12); overrides WGPU_BACKEND.

@@ -64,8 +64,11 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
     if !headless {
         return crate::app::window::run::<L>(&args, knobs, camera);
     }
-    if args.frames.is_some() {
-        bail!("--frames counts window frames; --screenshot and --film render without a window");
+    if args.frames == Some(0) {
+        bail!("--frames must be at least 1");
+    }
+    if args.frames.is_some() && args.film.is_some() {
+        bail!("--film records one frame step by step; --frames counts whole frames");
     }
     let start = std::time::Instant::now();
     let mut request = Request {
@@ -95,6 +98,8 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         eprintln!("ready to render in {:.0?}", start.elapsed());
     }
     if let Some(path) = &args.screenshot {
+        let frames = args.frames.unwrap_or(1);
+        headless.render_frames(frames.saturating_sub(1))?;
         save_png(&headless.capture()?.color, path)?;
         if args.verbose {
             eprintln!("wrote {} in {:.0?}", path.display(), start.elapsed());

@@ -164,6 +164,11 @@ impl<L: Lesson> Headless<L> {
         gpu.scoped(|| self.runner.set_knobs(knobs))
     }
 
+    /// The device the lesson renders with (for wgpu's own counters, say).
+    pub fn device(&self) -> &wgpu::Device {
+        &self.runner.gpu.device
+    }
+
     /// The names of the frame's steps with the current knobs.
     pub fn steps(&self) -> Vec<&'static str> {
         self.runner.steps()
@@ -172,6 +177,26 @@ impl<L: Lesson> Headless<L> {
     /// Where the frame stops from now on.
     pub fn set_stop(&mut self, stop: Stop) {
         self.stop = stop;
+    }
+
+    /// Renders `count` whole frames without reading anything back, each waited for before the next
+    /// (as a window waits for the display): what a long run does, to see that nothing grows.
+    pub fn render_frames(&self, count: u64) -> Result<()> {
+        self.runner.gpu.scoped(|| {
+            let runner = &self.runner;
+            let color_view = self.color.create_view(&Default::default());
+            for _ in 0..count {
+                let (encoder, _) =
+                    runner.record(&color_view, self.stop, Show::Color, &color_view)?;
+                runner.gpu.queue.submit([encoder.finish()]);
+                runner
+                    .gpu
+                    .device
+                    .poll(wgpu::PollType::wait_indefinitely())
+                    .context("waiting for the GPU failed")?;
+            }
+            Ok(())
+        })
     }
 
     /// Renders a frame and reads back what the request asked for.

@@ -8,20 +8,7 @@ use workbook_tests::shots::{self, LESSONS};
 #[test]
 fn every_knob_value_renders_cleanly() {
     for lesson in LESSONS {
-        let mut each = Vec::new();
-        for knob in shots::knobs(lesson).unwrap() {
-            let values: Vec<&str> = if knob.values.len() > 16 {
-                [0, 1, 2, 15, 16, 127, 128, 254, 255]
-                    .iter()
-                    .filter_map(|&i| knob.values.get(i).copied())
-                    .collect()
-            } else {
-                knob.values.to_vec()
-            };
-            for value in values {
-                each.push(vec![format!("{}={value}", knob.name)]);
-            }
-        }
+        let each = shots::every_knob_value(lesson).unwrap();
         shots::render_each(lesson, &each, |request| {
             (request.width, request.height) = (96, 54);
         })

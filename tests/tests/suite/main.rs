@@ -4,6 +4,7 @@
 //! errors above all: no test here can pass while wgpu complains.
 
 mod assets;
+mod backends;
 mod book;
 mod depth;
 mod drawing_order;
@@ -15,6 +16,7 @@ mod planar_shadow;
 mod reflect_skull;
 mod render_to_texture;
 mod screenshots;
+mod soak;
 mod stencil_basics;
 mod steps;
 mod transparent_mirror;
