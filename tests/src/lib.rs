@@ -1,6 +1,7 @@
 //! What the tests, the book and the learners' tools share: the catalogue of the book's screenshots,
 //! rendering any lesson by name, and image comparison with NVIDIA FLIP.
 
+pub mod bench;
 pub mod book;
 pub mod flip;
 pub mod geometry;

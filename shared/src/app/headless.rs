@@ -6,6 +6,7 @@ use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
 use crate::app::runner::Runner;
+use crate::gpu::timing::StepTimer;
 use crate::gpu::views::DEPTH_COPY_FORMAT;
 use crate::gpu::{Gpu, HEADLESS_FORMAT, Offscreen};
 use crate::lesson::Lesson;
@@ -77,6 +78,18 @@ impl Capture {
         let depth = self.depth.as_ref()?;
         Some(depth[(y * self.width() + x) as usize])
     }
+}
+
+/// What one measured frame cost.
+#[derive(Debug, Clone)]
+pub struct FrameTiming {
+    pub steps: Vec<&'static str>,
+    /// Each step's GPU time in milliseconds, where the adapter has timestamp queries.
+    pub gpu_ms: Option<Vec<f64>>,
+    /// CPU time to record the frame's commands and submit them.
+    pub record_and_submit: std::time::Duration,
+    /// From the start of recording until the GPU has finished the frame.
+    pub frame: std::time::Duration,
 }
 
 /// One step of a film: the three buffers after the step.
@@ -164,6 +177,17 @@ impl<L: Lesson> Headless<L> {
         gpu.scoped(|| self.runner.set_knobs(knobs))
     }
 
+    /// The adapter's name, backend and driver, as a benchmark names them.
+    pub fn device_info(&self) -> String {
+        let info = self.runner.gpu.adapter.get_info();
+        format!("{} ({:?}, {})", info.name, info.backend, info.driver_info)
+    }
+
+    /// A timer for this lesson's device, where it has timestamp queries.
+    pub fn timer(&self) -> Option<StepTimer> {
+        StepTimer::new(&self.runner.gpu)
+    }
+
     /// The device the lesson renders with (for wgpu's own counters, say).
     pub fn device(&self) -> &wgpu::Device {
         &self.runner.gpu.device
@@ -196,6 +220,32 @@ impl<L: Lesson> Headless<L> {
                     .context("waiting for the GPU failed")?;
             }
             Ok(())
+        })
+    }
+
+    /// Renders one whole frame and measures it: the CPU time to record and submit it, the wall time
+    /// until the GPU has finished it, and with a timer each step's GPU time.
+    pub fn timed_frame(&self, timer: Option<&StepTimer>) -> Result<FrameTiming> {
+        self.runner.gpu.scoped(|| {
+            let (runner, device) = (&self.runner, &self.runner.gpu.device);
+            let color_view = self.color.create_view(&Default::default());
+            let start = std::time::Instant::now();
+            let (encoder, steps) = match timer {
+                Some(timer) => runner.record_timed(&color_view, timer),
+                None => runner.record(&color_view, Stop::Last, Show::Color, &color_view)?,
+            };
+            runner.gpu.queue.submit([encoder.finish()]);
+            let record_and_submit = start.elapsed();
+            let gpu_ms = timer.map(|t| t.read(device, steps.len())).transpose()?;
+            device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .context("waiting for the GPU failed")?;
+            Ok(FrameTiming {
+                steps,
+                gpu_ms,
+                record_and_submit,
+                frame: start.elapsed(),
+            })
         })
     }
 

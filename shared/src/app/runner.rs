@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use anyhow::Result;
 
+use crate::gpu::timing::StepTimer;
 use crate::gpu::views::DepthViewPipelines;
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::Knobs;
@@ -105,6 +106,29 @@ impl<L: Lesson> Runner<L> {
             self.show(&mut encoder, show, output)?;
         }
         Ok((encoder, steps))
+    }
+
+    /// Records the whole frame into `color` with each step's pass writing its timestamps into
+    /// `timer`, which is then resolved: read the times with [`StepTimer::read`] after submitting.
+    pub fn record_timed(
+        &self,
+        color: &wgpu::TextureView,
+        timer: &StepTimer,
+    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
+        self.update();
+        let mut frame = Frame::new(
+            &self.gpu,
+            &self.scene,
+            (self.camera, self.view()),
+            (color, &self.depth_stencil),
+            usize::MAX,
+            None,
+        );
+        frame.timer = Some(timer);
+        self.lesson.render(&mut frame);
+        let (mut encoder, steps) = (frame.encoder, frame.steps);
+        timer.resolve(&mut encoder, steps.len());
+        (encoder, steps)
     }
 
     /// Records the whole frame into `color`, calling `after_step` after every step: one frame that

@@ -3,6 +3,7 @@
 //! recipes ([`states`]) and the pictures of the depth and stencil buffers ([`views`]).
 
 pub mod states;
+pub mod timing;
 pub mod views;
 
 use std::sync::{Arc, Mutex};

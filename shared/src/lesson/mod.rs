@@ -17,6 +17,7 @@ pub mod steps;
 
 use anyhow::Result;
 
+use crate::gpu::timing::StepTimer;
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::{Knob, Knobs};
 use crate::lesson::steps::Show;
@@ -65,6 +66,8 @@ pub struct Frame<'a> {
     /// Called after each recorded step, to look at the buffers mid-frame (`--film`, a step drawn
     /// into a lesson's own target).
     after_step: Option<AfterStep<'a>>,
+    /// Where each step's pass writes its timestamps, when the frame is timed.
+    pub(crate) timer: Option<&'a StepTimer>,
 }
 
 /// What the frame calls after each step it records: with the encoder, the step's index (from 0) and
@@ -98,6 +101,7 @@ impl<'a> Frame<'a> {
             steps: Vec::new(),
             stop,
             after_step,
+            timer: None,
         }
     }
 
@@ -147,7 +151,16 @@ impl<'a> Frame<'a> {
             Some(target) => (&target.color_view, &target.depth_stencil),
             None => (self.color, self.depth_stencil),
         };
-        let mut pass = pass(&mut self.encoder, name, start, color, depth_stencil);
+        let timestamps = self
+            .timer
+            .and_then(|timer| timer.writes(self.steps.len() - 1));
+        let mut pass = pass(
+            &mut self.encoder,
+            name,
+            start,
+            (color, depth_stencil),
+            timestamps,
+        );
         self.scene.bind_frame(&mut pass);
         draw(&mut pass);
         drop(pass);
@@ -169,8 +182,8 @@ fn pass<'e>(
     encoder: &'e mut wgpu::CommandEncoder,
     label: &str,
     start: Start,
-    color: &wgpu::TextureView,
-    depth_stencil: &DepthStencil,
+    (color, depth_stencil): (&wgpu::TextureView, &DepthStencil),
+    timestamp_writes: Option<wgpu::RenderPassTimestampWrites<'_>>,
 ) -> wgpu::RenderPass<'e> {
     let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::gpu::srgb_to_linear(c) as f64);
     let (color_load, depth, stencil) = match start {
@@ -203,7 +216,7 @@ fn pass<'e>(
                 store: wgpu::StoreOp::Store,
             }),
         }),
-        timestamp_writes: None,
+        timestamp_writes,
         occlusion_query_set: None,
         multiview_mask: None,
     })

@@ -5,6 +5,7 @@
 
 mod assets;
 mod backends;
+mod bench;
 mod book;
 mod depth;
 mod drawing_order;

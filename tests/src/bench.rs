@@ -1,0 +1,320 @@
+//! What a mirror costs, measured: every lesson (and the knob values that change the work) rendered
+//! headless, frame after frame, with the GPU time of each step from timestamp queries, the CPU time
+//! to record and submit a frame, frames per second and peak memory. `cargo bench-lessons` prints the
+//! table and writes the CSV and the plot the book's cost page shows.
+
+use std::fmt::Write as _;
+
+use anyhow::{Context, Result};
+use workbook::Lesson;
+use workbook::app::headless::{Headless, Request};
+
+use crate::shots::{ForLesson, for_lesson};
+
+/// One thing to measure: a lesson with knob settings.
+pub struct Case {
+    pub lesson: &'static str,
+    pub settings: &'static [&'static str],
+}
+
+/// The lessons with their default knobs, and the knob values that change the work.
+pub const CASES: &[Case] = &[
+    Case {
+        lesson: "depth-test",
+        settings: &[],
+    },
+    Case {
+        lesson: "stencil-basics",
+        settings: &[],
+    },
+    Case {
+        lesson: "mark-mirror",
+        settings: &[],
+    },
+    Case {
+        lesson: "reflect-skull",
+        settings: &[],
+    },
+    Case {
+        lesson: "winding-fix",
+        settings: &[],
+    },
+    Case {
+        lesson: "transparent-mirror",
+        settings: &[],
+    },
+    Case {
+        lesson: "drawing-order",
+        settings: &[],
+    },
+    Case {
+        lesson: "floor-mirror",
+        settings: &[],
+    },
+    Case {
+        lesson: "render-to-texture",
+        settings: &[],
+    },
+    Case {
+        lesson: "render-to-texture",
+        settings: &["resolution=half"],
+    },
+    Case {
+        lesson: "render-to-texture",
+        settings: &["resolution=quarter"],
+    },
+    Case {
+        lesson: "render-to-texture",
+        settings: &["technique=stencil"],
+    },
+    Case {
+        lesson: "planar-shadow",
+        settings: &[],
+    },
+    Case {
+        lesson: "planar-shadow",
+        settings: &["reflect-shadow=off"],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &["depth=0"],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &["depth=1"],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &["depth=2"],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &[],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &["depth=4"],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &["depth=5"],
+    },
+    Case {
+        lesson: "two-mirrors",
+        settings: &["depth=6"],
+    },
+];
+
+/// How to measure.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    pub sizes: Vec<(u32, u32)>,
+    pub warm_up: usize,
+    pub frames: usize,
+    /// Only the lessons' default knobs.
+    pub defaults_only: bool,
+}
+
+/// Medians and spread of one case at one size.
+#[derive(Debug, Clone)]
+pub struct Measured {
+    pub lesson: &'static str,
+    pub settings: String,
+    pub size: (u32, u32),
+    pub adapter: String,
+    /// Per step: name, and the median, 10th and 90th percentile of its GPU time in ms.
+    pub steps: Vec<(&'static str, [f64; 3])>,
+    /// Whole-frame GPU time (the steps summed), CPU record+submit in µs, frame wall time in ms.
+    pub gpu_ms: Option<[f64; 3]>,
+    pub cpu_us: [f64; 3],
+    pub frame_ms: [f64; 3],
+}
+
+impl Measured {
+    pub fn fps(&self) -> f64 {
+        1000.0 / self.frame_ms[0]
+    }
+}
+
+/// Measures one case.
+pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
+    struct Run<'a>(&'a Case, (u32, u32), &'a Plan);
+    impl ForLesson for Run<'_> {
+        type Output = Result<Measured>;
+        fn run<L: Lesson>(self) -> Self::Output {
+            let Run(case, size, plan) = self;
+            let mut request = Request::new::<L>(case.settings)?;
+            (request.width, request.height) = size;
+            let headless = Headless::<L>::new(&request)?;
+            let timer = headless.timer();
+            let mut frames = Vec::with_capacity(plan.frames);
+            for index in 0..plan.warm_up + plan.frames {
+                let frame = headless.timed_frame(timer.as_ref())?;
+                if index >= plan.warm_up {
+                    frames.push(frame);
+                }
+            }
+            let steps = frames[0].steps.clone();
+            let gpu = |pick: &dyn Fn(&[f64]) -> f64| -> Option<Vec<f64>> {
+                frames
+                    .iter()
+                    .map(|f| f.gpu_ms.as_deref().map(pick))
+                    .collect()
+            };
+            let step_times = (0..steps.len())
+                .map(|i| {
+                    let times = gpu(&|ms: &[f64]| ms.get(i).copied().unwrap_or(0.0));
+                    (steps[i], times.map_or([0.0; 3], |t| spread(&t)))
+                })
+                .collect();
+            let totals = gpu(&|ms: &[f64]| ms.iter().sum());
+            let info = headless.device_info();
+            Ok(Measured {
+                lesson: case.lesson,
+                settings: case.settings.join(" "),
+                size,
+                adapter: info,
+                steps: step_times,
+                gpu_ms: totals.map(|t| spread(&t)),
+                cpu_us: spread(
+                    &frames
+                        .iter()
+                        .map(|f| f.record_and_submit.as_secs_f64() * 1e6)
+                        .collect::<Vec<_>>(),
+                ),
+                frame_ms: spread(
+                    &frames
+                        .iter()
+                        .map(|f| f.frame.as_secs_f64() * 1e3)
+                        .collect::<Vec<_>>(),
+                ),
+            })
+        }
+    }
+    for_lesson(case.lesson, Run(case, size, plan))?
+        .with_context(|| format!("{} {}", case.lesson, case.settings.join(" ")))
+}
+
+/// Median, 10th and 90th percentile.
+pub fn spread(values: &[f64]) -> [f64; 3] {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
+    [at(0.5), at(0.1), at(0.9)]
+}
+
+/// The CSV's header: one row per case, size and step (the step `frame` is the whole frame).
+pub const CSV_HEADER: &str = "adapter,lesson,settings,width,height,step,gpu_ms_median,gpu_ms_p10,gpu_ms_p90,cpu_us_median,frame_ms_median,fps";
+
+pub fn csv(results: &[Measured]) -> String {
+    let mut out = format!("{CSV_HEADER}\n");
+    for m in results {
+        let row = |step: &str, gpu: [f64; 3]| {
+            format!(
+                "\"{}\",{},\"{}\",{},{},\"{step}\",{:.4},{:.4},{:.4},{:.1},{:.3},{:.1}\n",
+                m.adapter,
+                m.lesson,
+                m.settings,
+                m.size.0,
+                m.size.1,
+                gpu[0],
+                gpu[1],
+                gpu[2],
+                m.cpu_us[0],
+                m.frame_ms[0],
+                m.fps()
+            )
+        };
+        for (step, gpu) in &m.steps {
+            out += &row(step, *gpu);
+        }
+        out += &row("frame", m.gpu_ms.unwrap_or([f64::NAN; 3]));
+    }
+    out
+}
+
+/// The table the terminal shows: one line per case and size.
+pub fn table(results: &[Measured]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{:<20} {:<22} {:>9} {:>10} {:>10} {:>10} {:>8}",
+        "lesson", "knobs", "size", "GPU ms", "CPU µs", "frame ms", "frames/s"
+    );
+    for m in results {
+        let gpu = m
+            .gpu_ms
+            .map_or("n/a".to_string(), |g| format!("{:.3}", g[0]));
+        let _ = writeln!(
+            out,
+            "{:<20} {:<22} {:>9} {:>10} {:>10.0} {:>10.2} {:>8.1}",
+            m.lesson,
+            if m.settings.is_empty() {
+                "(defaults)"
+            } else {
+                &m.settings
+            },
+            format!("{}x{}", m.size.0, m.size.1),
+            gpu,
+            m.cpu_us[0],
+            m.frame_ms[0],
+            m.fps()
+        );
+    }
+    out
+}
+
+/// A horizontal bar chart of the GPU time of every case at one size, each bar split into its
+/// steps (SVG, no text baked into pixels: the labels are SVG text the browser draws).
+pub fn plot(results: &[Measured], size: (u32, u32), title: &str) -> String {
+    let rows: Vec<&Measured> = results.iter().filter(|m| m.size == size).collect();
+    let longest = rows
+        .iter()
+        .filter_map(|m| m.gpu_ms.map(|g| g[0]))
+        .fold(0.0f64, f64::max)
+        .max(1e-6);
+    let (left, width, bar, gap) = (260.0, 440.0, 16.0, 6.0);
+    let height = 40.0 + rows.len() as f64 * (bar + gap) + 30.0;
+    let mut svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"760\" height=\"{height}\" \
+         font-family=\"sans-serif\" font-size=\"12\">\n<text x=\"10\" y=\"20\" font-size=\"14\">{title}</text>\n"
+    );
+    let palette = [
+        "#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f", "#edc948", "#b07aa1",
+    ];
+    for (row, m) in rows.iter().enumerate() {
+        let y = 36.0 + row as f64 * (bar + gap);
+        let label = if m.settings.is_empty() {
+            m.lesson.to_string()
+        } else {
+            format!("{} {}", m.lesson, m.settings)
+        };
+        let _ = writeln!(
+            svg,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{label}</text>",
+            left - 8.0,
+            y + 12.0
+        );
+        let mut x = left;
+        for (index, (step, times)) in m.steps.iter().enumerate() {
+            let w = times[0] / longest * width;
+            let colour = palette[index % palette.len()];
+            let _ = writeln!(
+                svg,
+                "<rect x=\"{x:.1}\" y=\"{y:.1}\" width=\"{w:.2}\" height=\"{bar}\" fill=\"{colour}\"><title>{step}: {:.3} ms</title></rect>",
+                times[0]
+            );
+            x += w;
+        }
+        if let Some(gpu) = m.gpu_ms {
+            let _ = writeln!(
+                svg,
+                "<text x=\"{:.1}\" y=\"{}\">{:.2} ms</text>",
+                x + 6.0,
+                y + 12.0,
+                gpu[0]
+            );
+        }
+    }
+    svg + "</svg>\n"
+}

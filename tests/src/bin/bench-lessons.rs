@@ -1,0 +1,102 @@
+//! `cargo bench-lessons [--quick] [--out PREFIX]`: measures every lesson (see `workbook_tests::bench`)
+//! in a release build, prints the table, and writes PREFIX.csv and PREFIX-<size>.svg.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::Parser;
+use workbook_tests::bench::{self, CASES, Plan};
+
+#[derive(Parser)]
+#[command(
+    name = "bench-lessons",
+    about = "What every lesson's frame costs, step by step"
+)]
+struct Args {
+    /// A few frames of each lesson's defaults at 160x90: to check the benchmark works (CI).
+    #[arg(long)]
+    quick: bool,
+    /// Frames measured per case, after the warm-up.
+    #[arg(long, default_value_t = 40)]
+    frames: usize,
+    /// Where to write PREFIX.csv and PREFIX-WxH.svg.
+    #[arg(long, value_name = "PREFIX")]
+    out: Option<PathBuf>,
+}
+
+fn main() -> ExitCode {
+    workbook::app::cli::quiet_mesa();
+    let args = Args::parse();
+    let plan = match args.quick {
+        true => Plan {
+            sizes: vec![(160, 90)],
+            warm_up: 2,
+            frames: 5,
+            defaults_only: true,
+        },
+        false => Plan {
+            sizes: vec![(1280, 720), (1920, 1080)],
+            warm_up: 8,
+            frames: args.frames,
+            defaults_only: false,
+        },
+    };
+    let started = std::time::Instant::now();
+    let mut results = Vec::new();
+    for size in &plan.sizes {
+        for case in CASES
+            .iter()
+            .filter(|c| !plan.defaults_only || c.settings.is_empty())
+        {
+            match bench::measure(case, *size, &plan) {
+                Ok(measured) => results.push(measured),
+                Err(error) => {
+                    eprintln!("bench-lessons: error: {error:#}");
+                    return ExitCode::FAILURE;
+                }
+            }
+        }
+    }
+    let adapter = results.first().map_or(String::new(), |m| m.adapter.clone());
+    println!("adapter: {adapter}");
+    if results.iter().all(|m| m.gpu_ms.is_none()) {
+        println!(
+            "this adapter has no timestamp queries: GPU times are not measured (CPU and frame times are)"
+        );
+    }
+    print!("{}", bench::table(&results));
+    let peak = std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM:"))
+                .map(|l| l.to_string())
+        });
+    if let Some(peak) = peak {
+        println!(
+            "peak resident memory of the whole run: {}",
+            peak.trim_start_matches("VmHWM:").trim()
+        );
+    }
+    println!("measured in {:.0?}", started.elapsed());
+    if let Some(prefix) = args.out {
+        let csv = prefix.with_extension("csv");
+        let written = std::fs::write(&csv, bench::csv(&results)).and_then(|()| {
+            for size in &plan.sizes {
+                let name = format!("{}-{}x{}.svg", prefix.display(), size.0, size.1);
+                let title = format!("GPU time per frame, {}x{}, {adapter}", size.0, size.1);
+                std::fs::write(name, bench::plot(&results, *size, &title))?;
+            }
+            Ok(())
+        });
+        if let Err(error) = written {
+            eprintln!(
+                "bench-lessons: error: cannot write {}: {error}",
+                csv.display()
+            );
+            return ExitCode::FAILURE;
+        }
+        println!("wrote {} and its plots", csv.display());
+    }
+    ExitCode::SUCCESS
+}

@@ -1,0 +1,103 @@
+//! The benchmark's timing code: on an adapter with timestamp queries every step's GPU time is
+//! positive and the steps sum to no more than the frame's wall time; the benchmark runs in its quick
+//! form and its CSV has the columns the book's page reads.
+
+use workbook_tests::bench::{self, CSV_HEADER, Case, Plan};
+
+#[test]
+fn step_times_are_positive_and_fit_in_the_frame() {
+    let plan = Plan {
+        sizes: vec![(160, 90)],
+        warm_up: 1,
+        frames: 3,
+        defaults_only: true,
+    };
+    let mut results = Vec::new();
+    for case in [
+        Case {
+            lesson: "drawing-order",
+            settings: &[],
+        },
+        Case {
+            lesson: "render-to-texture",
+            settings: &[],
+        },
+        Case {
+            lesson: "two-mirrors",
+            settings: &["depth=2"],
+        },
+    ] {
+        let measured = bench::measure(&case, (160, 90), &plan).unwrap();
+        let Some(total) = measured.gpu_ms else {
+            eprintln!("skipped: this adapter has no timestamp queries");
+            return;
+        };
+        for (step, times) in &measured.steps {
+            assert!(
+                times[0] > 0.0,
+                "{}: step `{step}` took {} ms",
+                case.lesson,
+                times[0]
+            );
+        }
+        assert!(
+            total[0] <= measured.frame_ms[0],
+            "{}: the steps' {} ms exceed the frame's {} ms",
+            case.lesson,
+            total[0],
+            measured.frame_ms[0]
+        );
+        results.push(measured);
+    }
+    let csv = bench::csv(&results);
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some(CSV_HEADER));
+    let columns = CSV_HEADER.split(',').count();
+    for line in lines {
+        // Quoted fields hold no commas but the adapter's name: count outside quotes.
+        let mut inside = false;
+        let commas = line
+            .chars()
+            .filter(|&c| {
+                if c == '"' {
+                    inside = !inside;
+                }
+                c == ',' && !inside
+            })
+            .count();
+        assert_eq!(commas + 1, columns, "{line}");
+    }
+}
+
+/// The book's cost page shows what the benchmark wrote: each CSV there has the benchmark's columns,
+/// and each has its plots.
+#[test]
+fn the_cost_page_shows_benchmark_output() {
+    let dir = workbook_tests::workspace().join("book/src/cost");
+    let mut found = 0;
+    for entry in std::fs::read_dir(&dir).unwrap().flatten() {
+        let path = entry.path();
+        if path.extension().is_none_or(|e| e != "csv") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(text.lines().next(), Some(CSV_HEADER), "{}", path.display());
+        assert!(
+            text.lines().count() > 50,
+            "{}: too few rows",
+            path.display()
+        );
+        let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
+        for size in ["1280x720", "1920x1080"] {
+            assert!(
+                dir.join(format!("{stem}-{size}.svg")).exists(),
+                "{stem}-{size}.svg"
+            );
+        }
+        found += 1;
+    }
+    assert!(
+        found >= 2,
+        "the cost page needs lavapipe's and a real GPU's figures"
+    );
+}
