@@ -67,27 +67,7 @@ impl DepthViewPipelines {
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/depth_view.wgsl").into()),
         });
         let pipeline = |label: &str, entry: &str, format: wgpu::TextureFormat| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(label),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &shader,
-                    entry_point: Some("vs_fullscreen"),
-                    compilation_options: Default::default(),
-                    buffers: &[],
-                },
-                fragment: Some(wgpu::FragmentState {
-                    module: &shader,
-                    entry_point: Some(entry),
-                    compilation_options: Default::default(),
-                    targets: &[Some(format.into())],
-                }),
-                primitive: wgpu::PrimitiveState::default(),
-                depth_stencil: None,
-                multisample: wgpu::MultisampleState::default(),
-                multiview_mask: None,
-                cache: None,
-            })
+            fullscreen_pipeline(device, label, &pipeline_layout, (&shader, entry), format)
         };
         Self {
             show: pipeline("SHOW_DEPTH", "fs_depth", color_format),
@@ -140,6 +120,38 @@ impl DepthViewPipelines {
     ) {
         fullscreen_pass(encoder, "copy depth", &self.copy, target, bind_group);
     }
+}
+
+/// A pipeline that draws one full-screen triangle (`vs_fullscreen`) with fragment entry `entry` into
+/// a target of `format`, with no depth or stencil.
+fn fullscreen_pipeline(
+    device: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::PipelineLayout,
+    (shader, entry): (&wgpu::ShaderModule, &str),
+    format: wgpu::TextureFormat,
+) -> wgpu::RenderPipeline {
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(label),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: shader,
+            entry_point: Some("vs_fullscreen"),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        fragment: Some(wgpu::FragmentState {
+            module: shader,
+            entry_point: Some(entry),
+            compilation_options: Default::default(),
+            targets: &[Some(format.into())],
+        }),
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: None,
+        multisample: wgpu::MultisampleState::default(),
+        multiview_mask: None,
+        cache: None,
+    })
 }
 
 /// One full-screen triangle into `target` (cleared to black first), with `pipeline` and `bind_group`.
@@ -311,27 +323,13 @@ impl StencilViewPipeline {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let palette_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("STENCIL_PALETTE"),
-            layout: Some(&palette_layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_fullscreen"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_palette"),
-                compilation_options: Default::default(),
-                targets: &[Some(color_format.into())],
-            }),
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            multiview_mask: None,
-            cache: None,
-        });
+        let palette_pipeline = fullscreen_pipeline(
+            device,
+            "STENCIL_PALETTE",
+            &palette_layout,
+            (&shader, "fs_palette"),
+            color_format,
+        );
         Self {
             bits,
             palette_pipeline,
@@ -415,24 +413,7 @@ impl Blit {
     pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("blit bind group layout"),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                    count: None,
-                },
-            ],
+            entries: &[crate::gpu::texture_entry(0), crate::gpu::sampler_entry(1)],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("blit pipeline layout"),
@@ -443,27 +424,13 @@ impl Blit {
             label: Some("blit.wgsl"),
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/blit.wgsl").into()),
         });
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("SHOW_TEXTURE"),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_fullscreen"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_texture"),
-                compilation_options: Default::default(),
-                targets: &[Some(color_format.into())],
-            }),
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: None,
-            multisample: wgpu::MultisampleState::default(),
-            multiview_mask: None,
-            cache: None,
-        });
+        let pipeline = fullscreen_pipeline(
+            device,
+            "SHOW_TEXTURE",
+            &pipeline_layout,
+            (&shader, "fs_texture"),
+            color_format,
+        );
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("blit sampler"),
             mag_filter: wgpu::FilterMode::Linear,

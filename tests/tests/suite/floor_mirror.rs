@@ -153,17 +153,7 @@ fn only_the_stencil_keeps_the_reflection_inside_the_stone() {
     let step = |name| shots::after_step("floor-mirror", &[], name).unwrap();
     let marked = render(&[], step("mark the floor mirror"));
     let reflected = render(&[], step("draw the reflection"));
-    let mut inside = 0;
-    for (x, y, pixel) in reflected.color.enumerate_pixels() {
-        if pixel != marked.color.get_pixel(x, y) {
-            assert_eq!(
-                marked.stencil_at(x, y),
-                Some(1),
-                "({x}, {y}) changed outside the mark"
-            );
-            inside += 1;
-        }
-    }
+    let inside = workbook_tests::changed_only_inside_mark(&marked, &reflected, 1).unwrap();
     assert!(inside > 2000, "the reflection changed only {inside} pixels");
 
     let ours = render(&[], Stop::Last);

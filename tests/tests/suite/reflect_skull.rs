@@ -38,17 +38,7 @@ fn the_reflection_step_reads_the_mark_and_changes_only_the_marked_pixels() {
         marked.stencil, reflected.stencil,
         "the reflection changed the stencil"
     );
-    let mut changed = 0;
-    for (x, y, pixel) in reflected.color.enumerate_pixels() {
-        if pixel != marked.color.get_pixel(x, y) {
-            assert_eq!(
-                marked.stencil_at(x, y),
-                Some(1),
-                "({x}, {y}) changed outside the mark"
-            );
-            changed += 1;
-        }
-    }
+    let changed = workbook_tests::changed_only_inside_mark(&marked, &reflected, 1).unwrap();
     assert!(
         changed > 100,
         "the reflection changed only {changed} pixels"
