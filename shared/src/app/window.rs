@@ -1,6 +1,8 @@
 //! The window runner (winit 0.30): the lesson in a window, an orbit camera on the mouse, knobs on the
 //! number keys, the frame's steps on `[` and `]`, the buffer shown on `Tab`, and all of it in the
-//! title. It survives minimising, resizing, and surfaces that go `Outdated` or `Lost`.
+//! title. It survives minimising, resizing (to 1×1, or past the GPU's largest texture), and surfaces
+//! that go `Outdated` or `Lost` (lesson 1's `tests/storm.rs` puts it through these on X11, where
+//! a minimised window is unmapped rather than 0×0).
 
 use std::sync::Arc;
 
@@ -68,6 +70,8 @@ struct State<L: Lesson> {
     drag_from: Option<PhysicalPosition<f64>>,
     cursor: PhysicalPosition<f64>,
     modifiers: ModifiersState,
+    /// Test hook: surface answers still to pretend, last first (see [`injected_surface_errors`]).
+    injected: Vec<&'static str>,
 }
 
 impl<L: Lesson> App<'_, L> {
@@ -122,6 +126,7 @@ impl<L: Lesson> App<'_, L> {
             drag_from: None,
             cursor: PhysicalPosition::new(0.0, 0.0),
             modifiers: ModifiersState::empty(),
+            injected: injected_surface_errors()?,
         };
         state.update_title();
         Ok(state)
@@ -148,6 +153,54 @@ impl<L: Lesson> App<'_, L> {
             }
         }
         Err(failure)
+    }
+}
+
+/// The surface answers `WORKBOOK_INJECT_SURFACE_ERRORS` asks for, a test hook: with
+/// `WORKBOOK_INJECT_SURFACE_ERRORS=lost,outdated,timeout,suboptimal` the first frames'
+/// `get_current_texture` answers those, one each, in order, so that tests can check the runner
+/// recovers from answers a real surface seldom gives (`tests/storm.rs` in lesson 1). Read once, when
+/// the window opens: unset, the list is empty and the runner asks the surface as always. Returned
+/// last first, to be popped.
+fn injected_surface_errors() -> Result<Vec<&'static str>> {
+    const VARIABLE: &str = "WORKBOOK_INJECT_SURFACE_ERRORS";
+    let Some(list) = std::env::var_os(VARIABLE) else {
+        return Ok(Vec::new());
+    };
+    let list = list.to_string_lossy();
+    let names = list
+        .split(',')
+        .map(str::trim)
+        .filter(|name| !name.is_empty());
+    let known = ["lost", "outdated", "timeout", "suboptimal"];
+    let mut injected = names
+        .map(|name| {
+            known.into_iter().find(|k| *k == name).with_context(|| {
+                format!(
+                    "{VARIABLE}: unknown surface answer `{name}` (use {})",
+                    known.join(", ")
+                )
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    injected.reverse();
+    Ok(injected)
+}
+
+/// One pretended answer of `get_current_texture` (see [`injected_surface_errors`]); `suboptimal`
+/// wraps a real frame. Says so on stdout, for the test to see it happened.
+fn inject(name: &str, surface: &wgpu::Surface<'_>) -> wgpu::CurrentSurfaceTexture {
+    println!("injected surface answer: {name}");
+    match name {
+        "lost" => wgpu::CurrentSurfaceTexture::Lost,
+        "outdated" => wgpu::CurrentSurfaceTexture::Outdated,
+        "timeout" => wgpu::CurrentSurfaceTexture::Timeout,
+        _ => match surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(frame) => {
+                wgpu::CurrentSurfaceTexture::Suboptimal(frame)
+            }
+            other => other,
+        },
     }
 }
 
@@ -178,11 +231,16 @@ impl<L: Lesson> State<L> {
         if size.width == 0 || size.height == 0 {
             return;
         }
-        self.config.width = size.width;
-        self.config.height = size.height;
+        // A window larger than the GPU's textures may be (16384 pixels a side on llvmpipe, 8192 on
+        // many GPUs: a window stretched across monitors) failed validation and ended the lesson.
+        // Draw at the largest size allowed instead; the window shows it in part, or scaled.
+        let max = self.runner.gpu.max_size();
+        let (width, height) = (size.width.min(max), size.height.min(max));
+        self.config.width = width;
+        self.config.height = height;
         self.surface
             .configure(&self.runner.gpu.device, &self.config);
-        self.runner.resize(size.width, size.height);
+        self.runner.resize(width, height);
     }
 
     /// Draws one frame; returns whether one was shown.
@@ -191,19 +249,27 @@ impl<L: Lesson> State<L> {
         if size.width == 0 || size.height == 0 {
             return Ok(false);
         }
-        let frame = match self.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(frame) => frame,
-            wgpu::CurrentSurfaceTexture::Suboptimal(frame) => {
-                // Show this one, then configure again for the next.
-                drop(frame);
-                self.resize(size);
-                return Ok(false);
-            }
-            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
+        let current = match self.injected.pop() {
+            None => self.surface.get_current_texture(),
+            Some(name) => inject(name, &self.surface),
+        };
+        // Without `--frames` the window draws only when something changes: after an answer that
+        // is no frame but is recovered from at once (timeout, outdated, lost), ask for the frame
+        // again, or the window stays blank (or stale) until the mouse moves. Not when occluded:
+        // that would spin while the window is hidden.
+        let (frame, suboptimal) = match current {
+            wgpu::CurrentSurfaceTexture::Success(frame) => (frame, false),
+            // Still a frame: show it, then configure again for the next. (Dropping it showed
+            // nothing while a surface stayed suboptimal, and `--frames` never ended.)
+            wgpu::CurrentSurfaceTexture::Suboptimal(frame) => (frame, true),
+            wgpu::CurrentSurfaceTexture::Occluded => return Ok(false),
+            wgpu::CurrentSurfaceTexture::Timeout => {
+                self.window.request_redraw();
                 return Ok(false);
             }
             wgpu::CurrentSurfaceTexture::Outdated => {
                 self.resize(size);
+                self.window.request_redraw();
                 return Ok(false);
             }
             wgpu::CurrentSurfaceTexture::Lost => {
@@ -214,6 +280,7 @@ impl<L: Lesson> State<L> {
                     .create_surface(self.window.clone())
                     .context("the window's surface was lost and cannot be made again")?;
                 self.resize(size);
+                self.window.request_redraw();
                 return Ok(false);
             }
             wgpu::CurrentSurfaceTexture::Validation => {
@@ -230,6 +297,9 @@ impl<L: Lesson> State<L> {
         self.window.pre_present_notify();
         self.runner.gpu.queue.present(frame);
         self.runner.gpu.check_errors()?;
+        if suboptimal {
+            self.resize(size);
+        }
         Ok(true)
     }
 
