@@ -198,11 +198,6 @@ impl<L: Lesson> Headless<L> {
         self.runner.steps()
     }
 
-    /// Where the frame stops from now on.
-    pub fn set_stop(&mut self, stop: Stop) {
-        self.stop = stop;
-    }
-
     /// Renders `count` whole frames without reading anything back, each waited for before the next
     /// (as a window waits for the display): what a long run does, to see that nothing grows.
     pub fn render_frames(&self, count: u64) -> Result<()> {
