@@ -6,11 +6,13 @@
 //! - [`app`]: the command line, the window and headless runners;
 //! - [`gpu`]: device setup, the named pipeline recipes, the buffer views;
 //! - [`room`]: the scene of Luna's Mirror demo, meshes, textures, the camera;
-//! - [`math`]: the reflection matrix and the stencil model, on the CPU.
+//! - [`math`]: the reflection matrix and the stencil model, on the CPU;
+//! - [`book`]: the book's screenshots and how a lesson is compared with them (`--check`, the panel).
 //!
 //! A lesson implements [`Lesson`] and its `main` is `workbook::main::<TheLesson>()`.
 
 pub mod app;
+pub mod book;
 pub mod gpu;
 pub mod lesson;
 pub mod math;

@@ -17,7 +17,8 @@ pub const MAX_SIZE: u32 = 16384;
 #[command(
     after_help = "Keys in the window: 1-9 cycle the knobs (Shift+digit goes back), [ and ] step \
                   back and forward through the frame, Tab cycles color/depth/stencil, drag to \
-                  orbit, wheel to zoom, C prints the camera pose, Esc quits."
+                  orbit, wheel to zoom, C prints the camera pose, H hides or shows the side panel, Esc \
+                  quits."
 )]
 pub struct Args {
     /// Render one frame without a window and write it to this PNG file.
@@ -46,7 +47,8 @@ pub struct Args {
     #[arg(long, value_name = "DIR")]
     pub film: Option<PathBuf>,
     /// Camera pose YAW,PITCH,DISTANCE in degrees, degrees, metres (the window title shows the current one).
-    #[arg(long, value_name = "YAW,PITCH,DIST")]
+    /// A negative yaw needs no `=`: `--camera -20,15,10`.
+    #[arg(long, value_name = "YAW,PITCH,DIST", allow_hyphen_values = true)]
     pub camera: Option<String>,
     /// Show this OBJ model instead of the skull (placed and scaled to fit).
     #[arg(long, value_name = "PATH")]
@@ -61,6 +63,17 @@ pub struct Args {
     /// Folder with the textures and the skull.
     #[arg(long, value_name = "DIR")]
     pub assets: Option<PathBuf>,
+    /// Render every screenshot the book shows of this lesson, with the lesson as it is built now, and
+    /// say for each whether it matches the book's picture (FLIP); differences go into `check/`.
+    /// `--set` values change every picture (to see what a change would break).
+    #[arg(long)]
+    pub check: bool,
+    /// Open the window without its side panel (H shows it).
+    #[arg(long)]
+    pub no_panel: bool,
+    /// Scale the side panel's text and controls, e.g. 1.5 on a projector.
+    #[arg(long, value_name = "FACTOR", default_value = "1", value_parser = parse_scale)]
+    pub ui_scale: f32,
     /// Say which GPU adapter was taken, and how long things took.
     #[arg(short, long)]
     pub verbose: bool,
@@ -74,6 +87,14 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
         Some((w, h)) if (1..=MAX_SIZE).contains(&w) && (1..=MAX_SIZE).contains(&h) => Ok((w, h)),
         Some(_) => Err(format!("each side must be 1 to {MAX_SIZE} pixels")),
         None => Err("expected WIDTHxHEIGHT, e.g. 1280x720".to_string()),
+    }
+}
+
+fn parse_scale(text: &str) -> Result<f32, String> {
+    match text.trim().parse::<f32>() {
+        Ok(scale) if (0.5..=4.0).contains(&scale) => Ok(scale),
+        Ok(_) => Err("the scale must lie between 0.5 and 4".to_string()),
+        Err(_) => Err("expected a number, e.g. 1.5".to_string()),
     }
 }
 

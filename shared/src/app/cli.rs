@@ -13,6 +13,9 @@ use crate::lesson::Lesson;
 use crate::lesson::knobs::{self, Knobs};
 use crate::lesson::steps::{self, Show};
 
+/// Where `--check` writes the renders that differ from the book, and their difference images.
+pub const CHECK_OUTPUT: &str = "check";
+
 /// The whole `main` of a lesson binary: parse, run, and turn any error into one line and exit code 1.
 pub fn main<L: Lesson>() -> ExitCode {
     quiet_mesa();
@@ -59,6 +62,15 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         return Ok(());
     }
     let knobs = Knobs::from_settings(L::KNOBS, &args.settings)?;
+    if args.check {
+        let (scene, backend) = (args.scene(), args.backend.as_deref());
+        return crate::book::check::check::<L>(
+            &args.settings,
+            &scene,
+            backend,
+            CHECK_OUTPUT.as_ref(),
+        );
+    }
     let camera = args.camera::<L>()?;
     let headless = args.list_steps || args.screenshot.is_some() || args.film.is_some();
     if !headless {

@@ -1,6 +1,6 @@
 //! `cargo screenshots [NAME...]`: renders the book's images into `book/src/images/` — the
 //! screenshots, the enlarged crop and difference image of each wrong/right pair, and each lesson's
-//! step strip. These files are also the tests' references, so run this only on purpose: when a
+//! step strip, and the list of the screenshots with the arguments that make each (`shots.txt`). These files are also the tests' references, so run this only on purpose: when a
 //! picture is meant to change, look at the new one, and say why in the commit.
 //!
 //! A NAME is a screenshot's name, or a lesson's (all of that lesson's images); none means all.
@@ -47,8 +47,12 @@ fn write(wanted: &dyn Fn(&str, &str) -> bool) -> Result<()> {
     };
     for shot in SHOTS.iter().filter(|s| wanted(s.name, s.lesson)) {
         let path = save(&shot.render()?, shot.name)?;
-        println!("wrote {}   ({})", path.display(), shot.command());
+        println!("wrote {}   ({})", path.display(), shot.command()?);
     }
+    // The list of them all, which the window's panel and `--check` read: cheap, so always.
+    let list = images.join(workbook::book::shots::LIST);
+    std::fs::write(&list, workbook_tests::shots::list_text()?)?;
+    println!("wrote {}", list.display());
     for pair in PAIRS {
         let lesson = workbook_tests::shots::Shot::named(pair.wrong)?.lesson;
         if !(wanted(pair.wrong, lesson) || wanted(pair.right, lesson)) {
