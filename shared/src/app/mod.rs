@@ -1,4 +1,5 @@
-//! The application around a lesson: the one command line, the window and headless runners, and the
+//! The application around a lesson: the one command line, the window (with its workbench panel) and
+//! headless runners, and the
 //! helpers the lessons' command-line tests share. Both runners drive a lesson through [`runner`].
 
 pub mod args;
@@ -7,3 +8,4 @@ pub mod headless;
 pub mod runner;
 pub mod testing;
 pub mod window;
+pub mod workbench;

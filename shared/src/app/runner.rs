@@ -108,6 +108,75 @@ impl<L: Lesson> Runner<L> {
         Ok((encoder, steps))
     }
 
+    /// Records the frame into `color` up to `stop` and paints the depth and stencil buffers, as they
+    /// are then, into `depth` and `stencil` (the depth linearised, or the stored values with
+    /// `raw_depth`; not at all where the backend cannot read depth in a shader). Where the frame stops
+    /// after a step drawn into a lesson's own target, all three show that target's buffers. With a
+    /// timer, every step's pass writes its timestamps, resolved for [`StepTimer::read`]. The window's
+    /// panel shows the three side by side.
+    pub fn record_buffers(
+        &self,
+        [color, depth, stencil]: [&wgpu::TextureView; 3],
+        stop: Stop,
+        raw_depth: bool,
+        timer: Option<&StepTimer>,
+    ) -> Result<(wgpu::CommandEncoder, Vec<&'static str>)> {
+        self.update();
+        let depth_show = if raw_depth {
+            Show::RawDepth
+        } else {
+            Show::Depth
+        };
+        let can_depth = self.can_show(Show::Depth);
+        let (mut shown, mut failure) = (false, None);
+        let mut present =
+            |encoder: &mut wgpu::CommandEncoder, index, target: Option<&Offscreen>| {
+                if let (Some(target), Stop::After(number)) = (target, stop)
+                    && index + 1 == number
+                {
+                    shown = true;
+                    let mut paint = |show, output| {
+                        if let Err(error) = self.show_offscreen(encoder, show, target, output) {
+                            failure.get_or_insert(error);
+                        }
+                    };
+                    paint(Show::Color, color);
+                    if can_depth {
+                        paint(depth_show, depth);
+                    }
+                    paint(Show::Stencil, stencil);
+                }
+            };
+        let targets = (color, &self.depth_stencil);
+        let cameras = (self.camera, self.view());
+        let mut frame = Frame::new(
+            &self.gpu,
+            &self.scene,
+            cameras,
+            targets,
+            stop.count(),
+            Some(&mut present),
+        );
+        frame.timer = timer;
+        self.lesson.render(&mut frame);
+        let (mut encoder, steps) = (frame.encoder, frame.steps);
+        if let Some(error) = failure {
+            return Err(error);
+        }
+        stop.resolve(&steps)?;
+        if let Some(timer) = timer {
+            // The steps after the stop were named but not recorded.
+            timer.resolve(&mut encoder, steps.len().min(stop.count()));
+        }
+        if !shown {
+            if can_depth {
+                self.show(&mut encoder, depth_show, depth)?;
+            }
+            self.show(&mut encoder, Show::Stencil, stencil)?;
+        }
+        Ok((encoder, steps))
+    }
+
     /// Records the whole frame into `color` with each step's pass writing its timestamps into
     /// `timer`, which is then resolved: read the times with [`StepTimer::read`] after submitting.
     pub fn record_timed(

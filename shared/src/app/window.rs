@@ -1,6 +1,6 @@
-//! The window runner (winit 0.30): the lesson in a window, an orbit camera on the mouse, knobs on the
-//! number keys, the frame's steps on `[` and `]`, the buffer shown on `Tab`, and all of it in the
-//! title. It survives minimising, resizing (to 1×1, or past the GPU's largest texture), and surfaces
+//! The window runner (winit 0.30): the lesson in a window beside the workbench's side panel (`H`
+//! hides it), an orbit camera on the mouse, knobs on the number keys, the frame's steps on `[` and
+//! `]`, the buffer shown on `Tab`, and all of it in the title. It survives minimising, resizing (to 1×1, or past the GPU's largest texture), and surfaces
 //! that go `Outdated` or `Lost` (lesson 1's `tests/storm.rs` puts it through these on X11, where
 //! a minimised window is unmapped rather than 0×0).
 
@@ -17,10 +17,11 @@ use winit::window::{Window, WindowId};
 use crate::app::args::Args;
 use crate::app::headless::check_size;
 use crate::app::runner::Runner;
+use crate::app::workbench::{self, Viewing, Workbench};
 use crate::gpu::{self, Gpu};
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
-use crate::lesson::steps::{Show, Stop};
+use crate::lesson::steps::Stop;
 use crate::room::camera::Camera;
 
 /// Opens the lesson in a window and runs until it is closed (or `--frames` frames were shown).
@@ -65,8 +66,8 @@ struct State<L: Lesson> {
     config: wgpu::SurfaceConfiguration,
     runner: Runner<L>,
     /// The step the frame stops after, and the buffer shown.
-    stop: Stop,
-    show: Show,
+    viewing: Viewing,
+    workbench: Workbench<L>,
     drag_from: Option<PhysicalPosition<f64>>,
     cursor: PhysicalPosition<f64>,
     modifiers: ModifiersState,
@@ -116,13 +117,14 @@ impl<L: Lesson> App<'_, L> {
         if !runner.can_show(show) {
             anyhow::bail!(crate::gpu::views::DepthViewPipelines::UNSUPPORTED);
         }
+        let workbench = Workbench::new(&window, &runner, self.args)?;
         let state = State {
             window,
             surface,
             config,
             runner,
-            stop,
-            show,
+            viewing: Viewing { stop, show },
+            workbench,
             drag_from: None,
             cursor: PhysicalPosition::new(0.0, 0.0),
             modifiers: ModifiersState::empty(),
@@ -207,7 +209,7 @@ fn inject(name: &str, surface: &wgpu::Surface<'_>) -> wgpu::CurrentSurfaceTextur
 impl<L: Lesson> State<L> {
     fn update_title(&self) {
         let steps = self.runner.steps();
-        let number = self.stop.resolve(&steps).unwrap_or(steps.len());
+        let number = self.viewing.stop.resolve(&steps).unwrap_or(steps.len());
         let step = steps.get(number.wrapping_sub(1)).unwrap_or(&"");
         let knobs: Vec<String> = self
             .runner
@@ -220,7 +222,7 @@ impl<L: Lesson> State<L> {
             "{} — step {number}/{}: {step} — showing {} — {} — camera {}",
             L::NAME,
             steps.len(),
-            self.show.name(),
+            self.viewing.show.name(),
             knobs.join(" "),
             self.runner.camera
         ));
@@ -240,7 +242,9 @@ impl<L: Lesson> State<L> {
         self.config.height = height;
         self.surface
             .configure(&self.runner.gpu.device, &self.config);
-        self.runner.resize(width, height);
+        if !self.workbench.visible {
+            self.runner.resize(width, height);
+        }
     }
 
     /// Draws one frame; returns whether one was shown.
@@ -292,13 +296,30 @@ impl<L: Lesson> State<L> {
             label: Some("window frame view"),
             ..Default::default()
         });
-        let (encoder, _) = self.runner.record(&view, self.stop, self.show, &view)?;
-        self.runner.gpu.queue.submit([encoder.finish()]);
+        let mut again = false;
+        if self.workbench.visible {
+            let size = (self.config.width, self.config.height);
+            let (runner, viewing) = (&mut self.runner, &mut self.viewing);
+            again = self
+                .workbench
+                .draw(&self.window, runner, viewing, &view, size)?;
+        } else {
+            // The lesson alone, straight into the window, as the headless runner draws it.
+            self.runner.resize(self.config.width, self.config.height);
+            let (stop, show) = (self.viewing.stop, self.viewing.show);
+            let (encoder, _) = self.runner.record(&view, stop, show, &view)?;
+            self.runner.gpu.queue.submit([encoder.finish()]);
+        }
         self.window.pre_present_notify();
         self.runner.gpu.queue.present(frame);
         self.runner.gpu.check_errors()?;
         if suboptimal {
             self.resize(size);
+        }
+        if again {
+            // The panel changed something: draw again, for the panel to show it.
+            self.update_title();
+            self.window.request_redraw();
         }
         Ok(true)
     }
@@ -315,23 +336,23 @@ impl<L: Lesson> State<L> {
         if let Some(index) = digits.iter().position(|d| *d == code) {
             let mut knobs = self.runner.knobs.clone();
             if knobs.cycle(index, !self.modifiers.shift_key()) {
-                self.runner.set_knobs(knobs)?;
                 // Other knobs may make a frame of fewer steps.
-                let count = self.runner.steps().len();
-                if matches!(self.stop, Stop::After(n) if n >= count) {
-                    self.stop = Stop::Last;
-                }
+                workbench::set_knobs(&mut self.runner, &mut self.viewing, knobs)?;
                 return Ok(true);
             }
         }
         if code == BracketLeft || code == BracketRight {
             let count = self.runner.steps().len();
-            let number = self.stop.resolve(&self.runner.steps()).unwrap_or(count);
+            let number = self
+                .viewing
+                .stop
+                .resolve(&self.runner.steps())
+                .unwrap_or(count);
             let number = match code {
                 BracketLeft => number.saturating_sub(1).max(1),
                 _ => (number + 1).min(count),
             };
-            self.stop = if number == count {
+            self.viewing.stop = if number == count {
                 Stop::Last
             } else {
                 Stop::After(number)
@@ -339,10 +360,15 @@ impl<L: Lesson> State<L> {
             return Ok(true);
         }
         if code == Tab {
-            self.show = self.show.next();
-            if !self.runner.can_show(self.show) {
-                self.show = self.show.next();
+            let viewing = &mut self.viewing;
+            viewing.show = viewing.show.next();
+            if !self.runner.can_show(viewing.show) {
+                viewing.show = viewing.show.next();
             }
+            return Ok(true);
+        }
+        if code == KeyH {
+            self.workbench.visible = !self.workbench.visible;
             return Ok(true);
         }
         if code == KeyC {
@@ -371,6 +397,8 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
             return;
         };
         let mut changed = false;
+        // The panel sees every event first; a click or a wheel over it is not the camera's.
+        let over_panel = state.workbench.on_event(&state.window, &event);
         let result: Result<()> = (|| {
             match event {
                 WindowEvent::CloseRequested => event_loop.exit(),
@@ -398,6 +426,7 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
                     }
                     changed = state.key(&event)?;
                 }
+                WindowEvent::MouseInput { .. } | WindowEvent::MouseWheel { .. } if over_panel => {}
                 WindowEvent::MouseInput {
                     state: button_state,
                     button: MouseButton::Left,

@@ -32,6 +32,28 @@ pub const BOOK_POSE: Camera = Camera {
     distance: 11.0,
 };
 
+/// Behind the wall, looking back through the mirror's frame: the view that shows a reflection the
+/// stencil test did not confine.
+pub const BEHIND_THE_WALL: Camera = Camera {
+    yaw: 140.0,
+    pitch: 12.0,
+    distance: 10.0,
+};
+
+/// High above the floor, looking down at it.
+pub const FROM_ABOVE: Camera = Camera {
+    yaw: 15.0,
+    pitch: 60.0,
+    distance: 12.0,
+};
+
+/// The poses the book uses, by name (the window's panel offers them).
+pub const POSES: &[(&str, Camera)] = &[
+    ("front", BOOK_POSE),
+    ("behind the wall", BEHIND_THE_WALL),
+    ("from above", FROM_ABOVE),
+];
+
 impl Default for Camera {
     fn default() -> Self {
         BOOK_POSE

@@ -73,3 +73,43 @@ fn a_missing_reference_fails_and_is_not_written() {
             .exists()
     );
 }
+
+/// The list the window's panel and `--check` read (`book/src/images/shots.txt`) is the catalogue's:
+/// a shot added or changed without `cargo screenshots` fails here.
+#[test]
+fn the_books_list_of_screenshots_is_the_catalogue() {
+    let path = workbook::book::shots::images().join(workbook::book::shots::LIST);
+    let written = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        written == shots::list_text().unwrap(),
+        "{} is out of date: run `cargo screenshots` (it rewrites the list)",
+        path.display()
+    );
+    // And every line means what the lesson's command line means.
+    for shot in workbook::book::shots::read(&workbook::book::shots::images()).unwrap() {
+        shot.args().unwrap();
+    }
+}
+
+/// `--check` on an unmodified lesson: every picture matches the book; with a knob that breaks it,
+/// the pictures that change are named.
+#[test]
+fn check_says_every_picture_matches_and_names_the_one_that_differs() {
+    let scene = workbook::room::scene::SceneOptions::default();
+    let out = std::env::temp_dir().join(format!("workbook-check-{}", std::process::id()));
+    let check = |overrides: &[&str]| {
+        let overrides: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
+        workbook::book::check::check::<mark_mirror::MarkMirror>(&overrides, &scene, None, &out)
+    };
+    check(&[]).unwrap();
+    assert!(!out.exists(), "nothing differs, so nothing is written");
+    let error = format!("{:#}", check(&["mark-depth-test=off"]).unwrap_err());
+    // Only the default picture (the stencil buffer) changes: the mark writes no colour, the wrong
+    // picture has the knob set already, and seen from behind the wall there is no mark to change.
+    assert!(
+        error.ends_with(" pictures differ from the book: mark-mirror"),
+        "{error}"
+    );
+    assert!(out.join("mark-mirror-difference.png").exists());
+    std::fs::remove_dir_all(&out).unwrap();
+}

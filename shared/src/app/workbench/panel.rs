@@ -1,0 +1,333 @@
+//! The side panel itself: egui widgets drawn from what the lesson is now ([`Model`]), answering with
+//! what the user asked for ([`Action`]). It holds no GPU object and changes nothing, so it can be
+//! driven without a window (the test suite clicks it with `egui_kittest`).
+
+use egui::{Align, Color32, Layout, RichText, TextureId, Ui};
+
+use crate::lesson::knobs::{Knob, Knobs};
+use crate::lesson::steps::Show;
+use crate::room::camera::Camera;
+
+/// The panel's width in points (times `--ui-scale` in pixels): the view gets the rest.
+pub const WIDTH: f32 = 330.0;
+
+/// What the user asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    /// Set knob number `index` (from 0) to `value`.
+    Knob(usize, &'static str),
+    ResetKnobs,
+    /// Stop the frame after step `number` (from 1).
+    Step(usize),
+    Show(Show),
+    Camera(Camera),
+    PrintCamera,
+    CopyCamera,
+    Screenshot,
+    /// Turn to the settings of the book's screenshot number `index` of [`Model::book_shots`].
+    BookShot(usize),
+    ShowDifference(bool),
+    Hide,
+}
+
+/// What the book comparison has found for the current settings.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Book {
+    /// No screenshot of the book has these settings.
+    NoMatch,
+    /// Rendering the book's screenshot `name` to compare.
+    Comparing(String),
+    Compared {
+        name: String,
+        summary: String,
+        matches: bool,
+    },
+    Failed(String),
+}
+
+/// The GPU time of a frame, or only its CPU time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cost {
+    /// Each step's GPU time in milliseconds, from timestamp queries; `None` without them.
+    pub steps_ms: Option<Vec<f64>>,
+    /// From the start of recording until the GPU finished the frame (lesson and panel).
+    pub frame_ms: f64,
+    /// Frames per second over the last second, when the window draws continuously.
+    pub fps: Option<f64>,
+}
+
+/// Everything the panel shows.
+pub struct Model<'a> {
+    pub title: &'a str,
+    pub knob_list: &'static [Knob],
+    pub knobs: &'a Knobs,
+    pub steps: &'a [&'static str],
+    /// The step the frame stops after, from 1.
+    pub step: usize,
+    pub show: Show,
+    /// Whether this backend can show the depth buffer (GL cannot).
+    pub can_show_depth: bool,
+    /// The colour, depth and stencil pictures at the current step, and the view's aspect ratio.
+    pub thumbnails: Option<([TextureId; 3], f32)>,
+    pub cost: Option<&'a Cost>,
+    /// The adapter's name and backend.
+    pub adapter: &'a str,
+    pub camera: Camera,
+    /// Named camera poses: the lesson's own, the book's.
+    pub poses: &'a [(String, Camera)],
+    /// The names of the book's screenshots of this lesson.
+    pub book_shots: &'a [String],
+    pub book: &'a Book,
+    pub show_difference: bool,
+    /// The last thing the panel did that the user should read (a screenshot written, say).
+    pub message: Option<&'a str>,
+}
+
+/// Draws the panel on the right of `ui`; returns what the user asked for.
+pub fn show(ui: &mut Ui, model: &Model<'_>) -> Vec<Action> {
+    let mut actions = Vec::new();
+    egui::Panel::right("workbench panel")
+        .exact_size(WIDTH)
+        .resizable(false)
+        .show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                ui.heading(model.title);
+                ui.horizontal(|ui| {
+                    ui.label("H hides this panel.");
+                    if ui.small_button("Hide").clicked() {
+                        actions.push(Action::Hide);
+                    }
+                });
+                knobs(ui, model, &mut actions);
+                steps(ui, model, &mut actions);
+                cost(ui, model);
+                camera(ui, model, &mut actions);
+                book(ui, model, &mut actions);
+                if let Some(message) = model.message {
+                    ui.separator();
+                    ui.label(RichText::new(message).monospace());
+                }
+            });
+        });
+    actions
+}
+
+fn section(ui: &mut Ui, title: &str) {
+    ui.add_space(6.0);
+    ui.separator();
+    ui.label(RichText::new(title).strong().size(16.0));
+}
+
+/// A dropdown per knob, its meaning as the tooltip, the default marked.
+fn knobs(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
+    section(ui, "Knobs");
+    if model.knob_list.is_empty() {
+        ui.label("This lesson has no knobs.");
+    }
+    egui::Grid::new("knobs").num_columns(2).show(ui, |ui| {
+        for (index, (knob, (_, value))) in
+            model.knob_list.iter().zip(model.knobs.pairs()).enumerate()
+        {
+            let key = if index < 9 {
+                format!("[{}] ", index + 1)
+            } else {
+                String::new()
+            };
+            ui.label(format!("{key}{}", knob.name))
+                .on_hover_text(knob.meaning);
+            let marked = |v: &str| match v == knob.default {
+                true => format!("{v} (default)"),
+                false => v.to_string(),
+            };
+            egui::ComboBox::new(knob.name, "")
+                .selected_text(marked(value))
+                .show_ui(ui, |ui| {
+                    for &choice in knob.values {
+                        if ui
+                            .selectable_label(choice == value, marked(choice))
+                            .clicked()
+                            && choice != value
+                        {
+                            actions.push(Action::Knob(index, choice));
+                        }
+                    }
+                })
+                .response
+                .on_hover_text(knob.meaning);
+            ui.end_row();
+        }
+    });
+    let all_default = model.knobs.changed().is_empty();
+    if ui
+        .add_enabled(!all_default, egui::Button::new("Reset to defaults"))
+        .clicked()
+    {
+        actions.push(Action::ResetKnobs);
+    }
+}
+
+/// The frame's steps (click one to stop there), the buffer shown, and the three buffers small.
+fn steps(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
+    section(ui, "The frame's steps");
+    for (index, name) in model.steps.iter().enumerate() {
+        let number = index + 1;
+        let text = format!("{number}. {name}");
+        if ui.selectable_label(number == model.step, text).clicked() && number != model.step {
+            actions.push(Action::Step(number));
+        }
+    }
+    ui.horizontal(|ui| {
+        for show in [Show::Color, Show::Depth, Show::Stencil, Show::RawDepth] {
+            let enabled = show == Show::Color || show == Show::Stencil || model.can_show_depth;
+            let button = egui::Button::selectable(model.show == show, show.name());
+            if ui.add_enabled(enabled, button).clicked() && model.show != show {
+                actions.push(Action::Show(show));
+            }
+        }
+    });
+    if let Some((ids, aspect)) = model.thumbnails {
+        let width = (ui.available_width() - 2.0 * ui.spacing().item_spacing.x) / 3.0;
+        let size = egui::vec2(width, width / aspect.max(0.1));
+        ui.horizontal(|ui| {
+            for (id, show) in ids.into_iter().zip(Show::BUFFERS) {
+                ui.vertical(|ui| {
+                    let image = egui::Image::new((id, size)).sense(egui::Sense::click());
+                    let response = ui.add(image).on_hover_text(format!("show {}", show.name()));
+                    if response.clicked() && model.show != show {
+                        actions.push(Action::Show(show));
+                    }
+                    ui.label(RichText::new(show.name()).small());
+                });
+            }
+        });
+        if !model.can_show_depth {
+            ui.label("This backend cannot read the depth buffer in a shader: no depth picture.");
+        }
+    }
+}
+
+/// GPU time per step where the adapter has timestamp queries, otherwise the CPU's frame time.
+fn cost(ui: &mut Ui, model: &Model<'_>) {
+    section(ui, "What it costs");
+    ui.label(RichText::new(model.adapter).small());
+    let Some(cost) = model.cost else {
+        ui.label("Measuring…");
+        return;
+    };
+    match &cost.steps_ms {
+        Some(times) => {
+            ui.label("GPU time per step (timestamp queries):");
+            egui::Grid::new("step times").num_columns(2).show(ui, |ui| {
+                for (name, ms) in model.steps.iter().zip(times) {
+                    ui.label(*name);
+                    ui.with_layout(Layout::right_to_left(Align::Center), |ui| {
+                        ui.label(format!("{ms:.3} ms"));
+                    });
+                    ui.end_row();
+                }
+                ui.label(RichText::new("all steps").strong());
+                ui.with_layout(Layout::right_to_left(Align::Center), |ui| {
+                    ui.label(
+                        RichText::new(format!("{:.3} ms", times.iter().sum::<f64>())).strong(),
+                    );
+                });
+                ui.end_row();
+            });
+        }
+        None => {
+            ui.label(
+                "CPU time only: this adapter has no timestamp queries, so the steps cannot be timed \
+                 on the GPU.",
+            );
+        }
+    }
+    let fps = cost.fps.unwrap_or(1000.0 / cost.frame_ms.max(1e-3));
+    ui.label(format!(
+        "Frame (record to GPU done, CPU time): {:.2} ms · {fps:.0} frames/s",
+        cost.frame_ms
+    ));
+}
+
+/// The pose as `--camera` takes it, and the book's poses.
+fn camera(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
+    section(ui, "Camera");
+    ui.label(RichText::new(format!("--camera {}", model.camera)).monospace());
+    ui.horizontal(|ui| {
+        if ui
+            .button("Print")
+            .on_hover_text("print --camera … on the terminal")
+            .clicked()
+        {
+            actions.push(Action::PrintCamera);
+        }
+        if ui
+            .button("Copy")
+            .on_hover_text("copy --camera … to the clipboard")
+            .clicked()
+        {
+            actions.push(Action::CopyCamera);
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        for (name, pose) in model.poses {
+            if ui.selectable_label(*pose == model.camera, name).clicked() && *pose != model.camera {
+                actions.push(Action::Camera(*pose));
+            }
+        }
+    });
+    ui.add_space(4.0);
+    if ui
+        .button("Screenshot")
+        .on_hover_text("write the PNG --screenshot would, and print the command")
+        .clicked()
+    {
+        actions.push(Action::Screenshot);
+    }
+}
+
+/// Whether the view is one of the book's pictures, and how close.
+fn book(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
+    section(ui, "Compare with the book");
+    match model.book {
+        Book::NoMatch => {
+            ui.label("No picture of the book has these settings. Its pictures of this lesson:");
+        }
+        Book::Comparing(name) => {
+            ui.label(format!("This is the book's `{name}`: comparing…"));
+        }
+        Book::Compared {
+            name,
+            summary,
+            matches,
+        } => {
+            let (verdict, colour) = match matches {
+                true => ("matches the book", Color32::from_rgb(80, 200, 120)),
+                false => ("DIFFERS from the book", Color32::from_rgb(240, 90, 80)),
+            };
+            ui.label(format!("This is the book's `{name}`:"));
+            ui.label(RichText::new(verdict).color(colour).strong());
+            ui.label(RichText::new(summary).small());
+            let mut shown = model.show_difference;
+            if ui
+                .checkbox(&mut shown, "show FLIP's difference over the view")
+                .changed()
+            {
+                actions.push(Action::ShowDifference(shown));
+            }
+        }
+        Book::Failed(error) => {
+            ui.label(format!("Could not compare: {error}"));
+        }
+    }
+    ui.horizontal_wrapped(|ui| {
+        for (index, name) in model.book_shots.iter().enumerate() {
+            if ui
+                .small_button(name)
+                .on_hover_text("turn to this picture's settings")
+                .clicked()
+            {
+                actions.push(Action::BookShot(index));
+            }
+        }
+    });
+}

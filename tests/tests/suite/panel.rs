@@ -1,0 +1,150 @@
+//! The window's side panel driven as a user drives it, without a window: `egui_kittest` finds the
+//! widgets by their accessible names and clicks them. What the panel asks for is then carried out as
+//! the window does, and the lesson's render compared with the command line's.
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use workbook::app::headless::{Headless, Request};
+use workbook::app::workbench::panel::{self, Action, Book, Cost, Model};
+use workbook::room::camera::BOOK_POSE;
+use workbook::{Knob, Knobs, Lesson, Show};
+use workbook_tests::shots::{self, ForLesson, LESSONS};
+
+/// The panel of a lesson with these knobs and this cost, in a harness that keeps what it asked for.
+fn harness(
+    knob_list: &'static [Knob],
+    knobs: Knobs,
+    cost: Option<Cost>,
+) -> Harness<'static, Vec<Action>> {
+    let steps = vec!["clear", "draw the room"];
+    let poses = vec![("lesson".to_string(), BOOK_POSE)];
+    let app = move |ui: &mut egui::Ui, asked: &mut Vec<Action>| {
+        let model = Model {
+            title: "a lesson",
+            knob_list,
+            knobs: &knobs,
+            steps: &steps,
+            step: 2,
+            show: Show::Color,
+            can_show_depth: true,
+            thumbnails: None,
+            cost: cost.as_ref(),
+            adapter: "an adapter",
+            camera: BOOK_POSE,
+            poses: &poses,
+            book_shots: &[],
+            book: &Book::NoMatch,
+            show_difference: false,
+            message: None,
+        };
+        asked.extend(panel::show(ui, &model));
+    };
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 2000.0))
+        .build_ui_state(app, Vec::new())
+}
+
+/// The panel shows one dropdown per knob, named as `--list-knobs` names them, in its order.
+#[test]
+fn the_panel_lists_exactly_the_knobs_of_list_knobs() {
+    for lesson in LESSONS {
+        let knob_list = shots::knobs(lesson).unwrap();
+        let harness = harness(knob_list, Knobs::defaults(knob_list), None);
+        let listed = workbook::lesson::knobs::describe(knob_list);
+        for (index, knob) in knob_list.iter().enumerate() {
+            assert!(listed.contains(knob.name));
+            harness.get_by_label(&format!("[{}] {}", index + 1, knob.name));
+        }
+        let dropdowns = harness.query_all_by_role(Role::ComboBox).count();
+        assert_eq!(dropdowns, knob_list.len(), "{lesson}");
+    }
+}
+
+/// Choosing `compare = always` in stencil-basics' panel, then building the lesson with what the panel
+/// asked for as the window does, renders exactly what `--set compare=always` renders.
+#[test]
+fn choosing_a_knob_in_the_panel_renders_as_set_does() {
+    struct Drive;
+    impl ForLesson for Drive {
+        type Output = ();
+        fn run<L: Lesson>(self) {
+            let (name, value) = ("compare", "always");
+            let index = L::KNOBS.iter().position(|k| k.name == name).unwrap();
+            let mut harness = harness(L::KNOBS, Knobs::defaults(L::KNOBS), None);
+            harness
+                .get_all_by_role(Role::ComboBox)
+                .nth(index)
+                .unwrap()
+                .click();
+            harness.run();
+            harness.get_by_label(value).click();
+            harness.run();
+            assert_eq!(harness.state(), &[Action::Knob(index, value)]);
+
+            let mut request = Request::new::<L>(&[] as &[&str]).unwrap();
+            (request.width, request.height) = (320, 180);
+            let mut window = Headless::<L>::new(&request).unwrap();
+            let mut knobs = Knobs::defaults(L::KNOBS);
+            for action in harness.state() {
+                if let Action::Knob(index, value) = action {
+                    knobs
+                        .apply(&format!("{}={value}", L::KNOBS[*index].name))
+                        .unwrap();
+                }
+            }
+            window.set_knobs(knobs).unwrap();
+            let from_panel = window.capture().unwrap().color;
+            let mut set = Request::new::<L>(&[format!("{name}={value}")]).unwrap();
+            (set.width, set.height) = (320, 180);
+            let from_set = workbook::app::headless::render::<L>(&set).unwrap().color;
+            let default = workbook::app::headless::render::<L>(&request)
+                .unwrap()
+                .color;
+            assert!(from_panel == from_set, "the panel's render is not --set's");
+            assert!(
+                from_panel != default,
+                "the knob changed nothing: the test proves nothing"
+            );
+            let flip = workbook::book::flip::compare(&from_set, &from_panel).unwrap();
+            assert_eq!(flip.mean, 0.0);
+        }
+    }
+    shots::for_lesson("stencil-basics", Drive).unwrap();
+}
+
+/// The cost section says where its times come from: the GPU's timestamps, or the CPU alone.
+#[test]
+fn the_panel_says_gpu_time_or_cpu_time() {
+    let gpu = Cost {
+        steps_ms: Some(vec![0.5, 2.0]),
+        frame_ms: 4.0,
+        fps: None,
+    };
+    let harness_gpu = harness(&[], Knobs::defaults(&[]), Some(gpu));
+    harness_gpu.get_by_label("GPU time per step (timestamp queries):");
+    harness_gpu.get_by_label("2.500 ms");
+    let cpu = Cost {
+        steps_ms: None,
+        frame_ms: 4.0,
+        fps: None,
+    };
+    let harness_cpu = harness(&[], Knobs::defaults(&[]), Some(cpu));
+    harness_cpu.get_by_label_contains("CPU time only");
+    assert!(
+        harness_cpu
+            .query_by_label_contains("GPU time per step")
+            .is_none()
+    );
+}
+
+/// The hide button asks to hide, and clicking a step asks to stop there.
+#[test]
+fn the_panel_asks_for_steps_and_hiding() {
+    let mut harness = harness(&[], Knobs::defaults(&[]), None);
+    harness.get_by_label("1. clear").click();
+    harness.run();
+    harness.get_by_label("Hide").click();
+    harness.run();
+    assert_eq!(harness.state(), &[Action::Step(1), Action::Hide]);
+}
