@@ -10,7 +10,7 @@ use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Scene, gpu::states, room::scene:
 
 pub struct DrawingOrder {
     draw_opaque: wgpu::RenderPipeline,
-    draw_transparent: wgpu::RenderPipeline,
+    pub draw_transparent: wgpu::RenderPipeline,
     mark_mirror: wgpu::RenderPipeline,
     draw_reflection: wgpu::RenderPipeline,
     draw_reflected_transparent: wgpu::RenderPipeline,
@@ -86,7 +86,7 @@ impl Lesson for DrawingOrder {
 // ANCHOR: steps
 impl DrawingOrder {
     /// MARK_MIRROR: 1 into the stencil wherever the mirror passes the depth test.
-    fn mark_mirror(&self, frame: &mut Frame<'_>) {
+    pub fn mark_mirror(&self, frame: &mut Frame<'_>) {
         let scene = frame.scene;
         frame.step("mark the mirror", |pass| {
             pass.set_pipeline(&self.mark_mirror);
@@ -97,7 +97,7 @@ impl DrawingOrder {
 
     /// The mirror images where the stencil holds 1 — opaque, then transparent — lit by reflected
     /// lights, and the mirror's glass blended over them.
-    fn draw_reflected_world(&self, frame: &mut Frame<'_>, world: &MirrorWorld<'_>) {
+    pub fn draw_reflected_world(&self, frame: &mut Frame<'_>, world: &MirrorWorld<'_>) {
         let scene = frame.scene;
         frame.step("reflect the opaque objects", |pass| {
             scene.bind_reflected_frame(pass);
@@ -121,7 +121,7 @@ impl DrawingOrder {
         });
     }
 
-    fn draw_opaque(&self, frame: &mut Frame<'_>, opaque: &[&Drawable]) {
+    pub fn draw_opaque(&self, frame: &mut Frame<'_>, opaque: &[&Drawable]) {
         frame.step("draw the opaque objects", |pass| {
             pass.set_pipeline(&self.draw_opaque);
             for object in opaque {
@@ -130,7 +130,7 @@ impl DrawingOrder {
         });
     }
 
-    fn draw_transparent(&self, frame: &mut Frame<'_>, transparent: &[&Drawable]) {
+    pub fn draw_transparent(&self, frame: &mut Frame<'_>, transparent: &[&Drawable]) {
         frame.step("draw the transparent objects", |pass| {
             pass.set_pipeline(&self.draw_transparent);
             for object in transparent {
@@ -142,15 +142,15 @@ impl DrawingOrder {
 // ANCHOR_END: steps
 
 /// The objects the mirror shows, to be drawn reflected.
-struct MirrorWorld<'a> {
-    opaque: [&'a Drawable; 3],
+pub struct MirrorWorld<'a> {
+    pub opaque: [&'a Drawable; 3],
     /// Farthest first, by where their mirror images stand.
-    transparent: [&'a Drawable; 2],
+    pub transparent: [&'a Drawable; 2],
 }
 
 /// Transparent objects sorted farthest from the camera first, so each is blended over what lies
 /// behind it; `position` says where an object stands (itself, or its mirror image).
-fn farthest_first<'a, const N: usize>(
+pub fn farthest_first<'a, const N: usize>(
     frame: &Frame<'_>,
     mut objects: [&'a Drawable; N],
     position: fn(&Drawable) -> Vec3,

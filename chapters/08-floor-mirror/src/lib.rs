@@ -19,7 +19,7 @@ use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene};
 pub struct FloorMirror {
     technique: Technique,
     draw_room: wgpu::RenderPipeline,
-    mark_mirror: wgpu::RenderPipeline,
+    pub mark_mirror: wgpu::RenderPipeline,
     reset_depth: ResetDepth,
     draw_reflection: wgpu::RenderPipeline,
     draw_stone: wgpu::RenderPipeline,
@@ -210,7 +210,7 @@ impl Lesson for FloorMirror {
 
 /// The room of this lesson: the floor around the stone, the wall with its (unlit) mirror, the crate
 /// and the skull.
-fn room(scene: &Scene) -> [&Drawable; 5] {
+pub fn room(scene: &Scene) -> [&Drawable; 5] {
     [
         &scene.floor_around_mirror,
         &scene.wall,

@@ -26,7 +26,7 @@ pub struct RenderToTexture {
     on_floor: bool,
     draw_room: wgpu::RenderPipeline,
     /// The room seen from the reflected camera, into the texture.
-    draw_reflected_view: wgpu::RenderPipeline,
+    pub draw_reflected_view: wgpu::RenderPipeline,
     reflected_camera: FrameBinding,
     texture_mirror: TextureMirror,
     texture: RefCell<Option<Offscreen>>,
@@ -208,7 +208,7 @@ impl RenderToTexture {
 /// The reflected view's recipe. `view · R` has determinant −1, so the triangles facing the mirror
 /// wind clockwise (lesson 5); Rastertek's camera is an ordinary one. Neither may test a stencil: the
 /// texture has a stencil buffer of its own, cleared to 0.
-fn reflected_view_recipe(rastertek: bool, clip: bool) -> Recipe {
+pub fn reflected_view_recipe(rastertek: bool, clip: bool) -> Recipe {
     let recipe = if rastertek {
         states::OPAQUE
     } else {

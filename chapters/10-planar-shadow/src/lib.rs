@@ -28,7 +28,7 @@ pub struct PlanarShadow {
     draw_reflection: wgpu::RenderPipeline,
     draw_reflected_shadow: wgpu::RenderPipeline,
     draw_glass: wgpu::RenderPipeline,
-    draw_shadow: wgpu::RenderPipeline,
+    pub draw_shadow: wgpu::RenderPipeline,
     mirror_world: MirrorWorld,
     shadow: Placed,
     reflected_shadow: Option<Placed>,

@@ -117,7 +117,7 @@ pub struct TwoMirrors {
     draw_room: wgpu::RenderPipeline,
     /// Per front face: Ccw for even levels, Cw for odd ones (or always, with winding=always-flipped).
     draw_level: [wgpu::RenderPipeline; 2],
-    mark_level: [wgpu::RenderPipeline; 2],
+    pub mark_level: [wgpu::RenderPipeline; 2],
     draw_glass: [wgpu::RenderPipeline; 2],
     reset_depth: ResetDepth,
     /// Levels 1 to depth: the room under level k's reflection, clipped behind its mirror.
@@ -133,7 +133,7 @@ pub struct TwoMirrors {
 /// behind the mirror that shows them; the mark of the mirror they show, by incrementing k to k + 1
 /// (or, mark=replace, by writing k + 1 wherever the mirror passes the depth test); each with the
 /// front face the level's determinant asks for.
-fn level_recipes(front_face: FrontFace, replace: bool) -> (Recipe, Recipe, Recipe) {
+pub fn level_recipes(front_face: FrontFace, replace: bool) -> (Recipe, Recipe, Recipe) {
     let draw = Recipe {
         name: "DRAW_LEVEL",
         front_face,

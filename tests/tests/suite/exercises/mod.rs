@@ -1,0 +1,16 @@
+//! The exercises' solutions (`chapters/NN-name/examples/exercise-K.rs`), each tested by what its
+//! exercise asks for, and each with a counterpart that shows the lesson alone does not already do it:
+//! no exercise can be a no-op. The solutions are compiled into this binary through `#[path]`
+//! modules, so wgpu is linked once.
+
+mod lesson_01;
+mod lesson_02;
+mod lesson_03;
+mod lesson_04;
+mod lesson_05;
+mod lesson_06;
+mod lesson_07;
+mod lesson_08;
+mod lesson_09;
+mod lesson_10;
+mod lesson_11;
