@@ -7,27 +7,17 @@ use std::path::PathBuf;
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 use workbook::app::headless::{Capture, Headless, Request, Still};
+use workbook::book::shots::{self as book_shots, BookShot};
 use workbook::room::camera::Camera;
 use workbook::{Knobs, Lesson, Show};
 
 use crate::flip::{self, Threshold};
 
-/// The size of every screenshot in the book: small enough to keep the repository light, large enough
-/// to see a fringe.
-pub const SIZE: (u32, u32) = (800, 450);
+/// The size of every screenshot in the book.
+pub use workbook::book::shots::SIZE;
 
-/// The references were made with lavapipe, which renders each of these bit-identically run to run:
-/// on the machine that made them the error is 0. An NVIDIA H200 (Vulkan, driver 580) filters the
-/// textures a little differently (anisotropic filtering is the driver's own): measured against the
-/// references, FLIP mean 0.017-0.018 with 0.000-0.056% of the pixels visibly different. The mean
-/// limit sits above that. What a reader would notice shows in the share of visibly different pixels:
-/// the smallest wrong picture of the book (drawing-order's dark fringe) differs from its right one
-/// in 0.33% of the pixels, a 30×30 patch in 0.25%; the limit, 0.15%, lies between those and the
-/// other driver's 0.056%.
-pub const STRICT: Threshold = Threshold {
-    mean: 0.03,
-    visible_share: 0.0015,
-};
+/// The limit every screenshot is judged by (see its comment).
+pub use workbook::book::flip::STRICT;
 
 /// One screenshot of the book.
 #[derive(Debug)]
@@ -382,6 +372,82 @@ pub const SHOTS: &[Shot] = &[
         step: Some("draw the reflection"),
         ..SHOT
     },
+    // The answers of the lesson pages' "Predict the picture" questions.
+    Shot {
+        name: "predict-depth-test-not-equal",
+        lesson: "depth-test",
+        settings: &["depth=not-equal"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-stencil-basics-greater",
+        lesson: "stencil-basics",
+        settings: &["compare=greater"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-stencil-basics-masked",
+        lesson: "stencil-basics",
+        settings: &["reference=3", "read-mask=0x01"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-mark-mirror-behind",
+        lesson: "mark-mirror",
+        camera: Some(BEHIND_THE_WALL),
+        ..SHOT
+    },
+    Shot {
+        name: "predict-reflect-skull-no-stencil",
+        lesson: "reflect-skull",
+        settings: &["stencil=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-winding-fix-no-culling",
+        lesson: "winding-fix",
+        settings: &["winding-fix=no-culling"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-transparent-mirror-opaque-alpha-0",
+        lesson: "transparent-mirror",
+        settings: &["mirror-alpha=0", "blend=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-drawing-order-luna-stencil",
+        lesson: "drawing-order",
+        settings: &["order=luna"],
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
+        name: "predict-floor-mirror-clip-off",
+        lesson: "floor-mirror",
+        settings: &["clip=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-render-to-texture-rastertek",
+        lesson: "render-to-texture",
+        settings: &["camera=rastertek"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-planar-shadow-wall-double-blend",
+        lesson: "planar-shadow",
+        settings: &["surface=wall", "light=point", "no-double-blend=off"],
+        // planar-shadow-wall's pose, -20,15,10, with a yaw a command line takes without `=`.
+        camera: Some("340,15,10"),
+        ..SHOT
+    },
+    Shot {
+        name: "predict-two-mirrors-depth-0",
+        lesson: "two-mirrors",
+        settings: &["depth=0"],
+        ..SHOT
+    },
 ];
 
 /// A wrong picture of the book and the right one it is shown beside. `cargo screenshots` makes an
@@ -486,24 +552,41 @@ impl Shot {
     }
 
     /// The command a reader types to make this picture.
-    pub fn command(&self) -> String {
-        let mut command = format!(
-            "cargo run -p {} -- --size {}x{}",
-            self.lesson, SIZE.0, SIZE.1
-        );
+    pub fn command(&self) -> Result<String> {
+        let arguments = self.arguments()?.join(" ");
+        Ok(format!(
+            "cargo run -p {} -- {arguments} --screenshot {}.png",
+            self.lesson, self.name
+        ))
+    }
+
+    /// The arguments of the lesson's command line that make this picture (all but `--screenshot`).
+    pub fn arguments(&self) -> Result<Vec<String>> {
+        let mut arguments = vec!["--size".to_string(), format!("{}x{}", SIZE.0, SIZE.1)];
         for setting in self.settings {
-            command += &format!(" --set {setting}");
+            arguments.extend(["--set".to_string(), setting.to_string()]);
         }
         if let Some(camera) = self.camera {
-            command += &format!(" --camera {camera}");
+            arguments.extend(["--camera".to_string(), camera.to_string()]);
         }
         if let Some(show) = self.show {
-            command += &format!(" --show {}", show.name());
+            arguments.extend(["--show".to_string(), show.name().to_string()]);
         }
-        if let Some(Ok(workbook::Stop::After(number))) = self.stop() {
-            command += &format!(" --step {number}");
+        if let Some(stop) = self.stop()
+            && let workbook::Stop::After(number) = stop?
+        {
+            arguments.extend(["--step".to_string(), number.to_string()]);
         }
-        command + &format!(" --screenshot {}.png", self.name)
+        Ok(arguments)
+    }
+
+    /// The shot as the book's list of screenshots holds it (for the window and `--check`).
+    pub fn book_shot(&self) -> Result<BookShot> {
+        Ok(BookShot {
+            name: self.name.to_string(),
+            lesson: self.lesson.to_string(),
+            arguments: self.arguments()?,
+        })
     }
 
     /// Where the shot's frame stops, when it names a step.
@@ -548,6 +631,15 @@ impl Shot {
     pub fn check(&self) -> Result<()> {
         check_image(self.name, &self.render()?, self.threshold)
     }
+}
+
+/// The book's list of screenshots (`book/src/images/shots.txt`) as the catalogue makes it.
+pub fn list_text() -> Result<String> {
+    let shots = SHOTS
+        .iter()
+        .map(Shot::book_shot)
+        .collect::<Result<Vec<_>>>()?;
+    Ok(book_shots::list_text(&shots))
 }
 
 /// Every lesson by package name, in the book's order.
