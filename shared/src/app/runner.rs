@@ -108,15 +108,16 @@ impl<L: Lesson> Runner<L> {
         Ok((encoder, steps))
     }
 
-    /// Records the frame into `color` up to `stop` and paints the depth and stencil buffers, as they
-    /// are then, into `depth` and `stencil` (the depth linearised, or the stored values with
+    /// Records the frame into `color` up to `stop` and, given `pictures`, paints the depth and stencil
+    /// buffers, as they are then, into them (the depth linearised, or the stored values with
     /// `raw_depth`; not at all where the backend cannot read depth in a shader). Where the frame stops
     /// after a step drawn into a lesson's own target, all three show that target's buffers. With a
     /// timer, every step's pass writes its timestamps, resolved for [`StepTimer::read`]. The window's
     /// panel shows the three side by side.
     pub fn record_buffers(
         &self,
-        [color, depth, stencil]: [&wgpu::TextureView; 3],
+        color: &wgpu::TextureView,
+        pictures: Option<[&wgpu::TextureView; 2]>,
         stop: Stop,
         raw_depth: bool,
         timer: Option<&StepTimer>,
@@ -141,10 +142,12 @@ impl<L: Lesson> Runner<L> {
                         }
                     };
                     paint(Show::Color, color);
-                    if can_depth {
-                        paint(depth_show, depth);
+                    if let Some([depth, stencil]) = pictures {
+                        if can_depth {
+                            paint(depth_show, depth);
+                        }
+                        paint(Show::Stencil, stencil);
                     }
-                    paint(Show::Stencil, stencil);
                 }
             };
         let targets = (color, &self.depth_stencil);
@@ -168,7 +171,7 @@ impl<L: Lesson> Runner<L> {
             // The steps after the stop were named but not recorded.
             timer.resolve(&mut encoder, steps.len().min(stop.count()));
         }
-        if !shown {
+        if let (false, Some([depth, stencil])) = (shown, pictures) {
             if can_depth {
                 self.show(&mut encoder, depth_show, depth)?;
             }

@@ -162,6 +162,18 @@ fn fullscreen_pass(
     target: &wgpu::TextureView,
     bind_group: &wgpu::BindGroup,
 ) {
+    fullscreen_pass_in(encoder, label, pipeline, target, bind_group, None);
+}
+
+/// A full-screen pass confined to `viewport` (x, y, width, height in pixels), the rest cleared.
+fn fullscreen_pass_in(
+    encoder: &mut wgpu::CommandEncoder,
+    label: &str,
+    pipeline: &wgpu::RenderPipeline,
+    target: &wgpu::TextureView,
+    bind_group: &wgpu::BindGroup,
+    viewport: Option<[f32; 4]>,
+) {
     let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some(label),
         color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -178,6 +190,9 @@ fn fullscreen_pass(
         occlusion_query_set: None,
         multiview_mask: None,
     });
+    if let Some([x, y, width, height]) = viewport {
+        pass.set_viewport(x, y, width, height, 0.0, 1.0);
+    }
     pass.set_pipeline(pipeline);
     pass.set_bind_group(0, bind_group, &[]);
     pass.draw(0..3, 0..1);
@@ -452,6 +467,20 @@ impl Blit {
         source: &wgpu::TextureView,
         target: &wgpu::TextureView,
     ) {
+        self.draw_in(device, encoder, source, target, None);
+    }
+
+    /// Draws `source` into the `viewport` (x, y, width, height in pixels) of `target`, or all of
+    /// it, clearing the rest to black. A source of the viewport's size is copied pixel for pixel
+    /// (the window's view beside its panel).
+    pub fn draw_in(
+        &self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        source: &wgpu::TextureView,
+        target: &wgpu::TextureView,
+        viewport: Option<[f32; 4]>,
+    ) {
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("blit bind group"),
             layout: &self.layout,
@@ -466,6 +495,14 @@ impl Blit {
                 },
             ],
         });
-        fullscreen_pass(encoder, "show texture", &self.pipeline, target, &bind_group);
+        let label = "show texture";
+        fullscreen_pass_in(
+            encoder,
+            label,
+            &self.pipeline,
+            target,
+            &bind_group,
+            viewport,
+        );
     }
 }

@@ -28,6 +28,9 @@ use crate::room::camera::{self, Camera};
 use crate::room::scene::SceneOptions;
 use panel::{Action, Book, Cost, Model};
 
+/// How often the depth and stencil thumbnails follow a moving camera, in seconds.
+const PICTURES_EVERY_S: f64 = 0.25;
+
 /// What the window and the panel both change: where the frame stops and what is shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Viewing {
@@ -40,6 +43,8 @@ struct Buffers {
     size: (u32, u32),
     /// Colour, depth, stencil.
     views: [wgpu::TextureView; 3],
+    /// The same, as egui samples them (sRGB-encoded values, not decoded).
+    encoded: [wgpu::TextureView; 3],
 }
 
 pub struct Workbench<L: Lesson> {
@@ -52,6 +57,9 @@ pub struct Workbench<L: Lesson> {
     timer: Option<StepTimer>,
     cost: Option<Cost>,
     presented: VecDeque<Instant>,
+    /// What the depth and stencil pictures were last painted for, and when.
+    pictures_for: Option<(Knobs, Viewing, (u32, u32))>,
+    pictures_at: Instant,
     adapter: String,
     poses: Vec<(String, Camera)>,
     book_shots: Vec<BookShot>,
@@ -90,7 +98,7 @@ impl<L: Lesson> Workbench<L> {
         let mut renderer =
             egui_wgpu::Renderer::new(&gpu.device, runner.scene.color_format, options);
         let buffers = Buffers::new(gpu, runner.scene.color_format, runner.depth_stencil.size());
-        let ids = buffers.views.each_ref().map(|view| {
+        let ids = buffers.encoded.each_ref().map(|view| {
             renderer.register_native_texture(&gpu.device, view, wgpu::FilterMode::Nearest)
         });
         let info = gpu.adapter.get_info();
@@ -118,6 +126,8 @@ impl<L: Lesson> Workbench<L> {
             timer: StepTimer::new(gpu),
             cost: None,
             presented: VecDeque::new(),
+            pictures_for: None,
+            pictures_at: Instant::now(),
             adapter: format!("{} ({:?})", info.name, info.backend),
             poses,
             book_names: book_shots.iter().map(|s| s.name.clone()).collect(),
@@ -187,11 +197,6 @@ impl<L: Lesson> Workbench<L> {
             show_difference: self.show_difference,
             message: self.message.as_deref(),
         };
-        let shown = match viewing.show {
-            Show::Color => self.ids[0],
-            Show::Depth | Show::RawDepth => self.ids[1],
-            Show::Stencil => self.ids[2],
-        };
         let difference = self
             .difference
             .as_ref()
@@ -205,7 +210,6 @@ impl<L: Lesson> Workbench<L> {
             view_rect = pixel_rect(ui.available_rect_before_wrap(), ui.ctx().pixels_per_point());
             let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
             let painter = ui.painter();
-            painter.image(shown, view_rect, uv, egui::Color32::WHITE);
             if let Some((id, picture)) = difference {
                 let fit = (view_rect.width() / picture.x).min(view_rect.height() / picture.y);
                 let rect = egui::Rect::from_center_size(view_rect.center(), picture * fit);
@@ -228,7 +232,7 @@ impl<L: Lesson> Workbench<L> {
         );
         if view_size != self.buffers.size {
             self.buffers = Buffers::new(&runner.gpu, runner.scene.color_format, view_size);
-            for (view, id) in self.buffers.views.iter().zip(self.ids) {
+            for (view, id) in self.buffers.encoded.iter().zip(self.ids) {
                 self.renderer.update_egui_texture_from_wgpu_texture(
                     &runner.gpu.device,
                     view,
@@ -240,12 +244,48 @@ impl<L: Lesson> Workbench<L> {
         }
         let [color, depth, stencil] = &self.buffers.views;
         let raw_depth = viewing.show == Show::RawDepth;
+        // The depth and stencil pictures cost a third of the frame on a software GPU (the stencil
+        // one is nine full-window passes): paint them when what they show changed, when one is the
+        // view, and otherwise (the camera moving) four times a second.
+        let key = (runner.knobs.clone(), *viewing, view_size);
+        let fresh = self.pictures_for.as_ref() != Some(&key)
+            || viewing.show != Show::Color
+            || self.pictures_at.elapsed().as_secs_f64() > PICTURES_EVERY_S;
+        let pictures = fresh.then_some([depth, stencil]);
         let (mut encoder, steps) = runner.record_buffers(
-            [color, depth, stencil],
+            color,
+            pictures,
             viewing.stop,
             raw_depth,
             self.timer.as_ref(),
         )?;
+        if fresh {
+            self.pictures_for = Some(key);
+            self.pictures_at = Instant::now();
+        }
+        // The view, pixel for pixel, by a plain copy (through egui's shader it cost a software GPU
+        // 29 ms a frame at 1280x720); then the panel over the rest.
+        let viewport = [
+            (view_rect.min.x * ppp).round(),
+            (view_rect.min.y * ppp).round(),
+            view_size.0 as f32,
+            view_size.1 as f32,
+        ];
+        let fits = viewport[0] + viewport[2] <= size.0 as f32
+            && viewport[1] + viewport[3] <= size.1 as f32;
+        let shown = &self.buffers.views[match viewing.show {
+            Show::Color => 0,
+            Show::Depth | Show::RawDepth => 1,
+            Show::Stencil => 2,
+        }];
+        let blit = &runner.scene.blit;
+        blit.draw_in(
+            &runner.gpu.device,
+            &mut encoder,
+            shown,
+            target,
+            fits.then_some(viewport),
+        );
         self.paint(
             runner,
             &mut encoder,
@@ -326,7 +366,7 @@ impl<L: Lesson> Workbench<L> {
                     depth_slice: None,
                     resolve_target: None,
                     ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                        load: wgpu::LoadOp::Load,
                         store: wgpu::StoreOp::Store,
                     },
                 })],
@@ -497,18 +537,43 @@ fn pixel_rect(rect: egui::Rect, pixels_per_point: f32) -> egui::Rect {
 
 impl Buffers {
     fn new(gpu: &crate::Gpu, format: wgpu::TextureFormat, size: (u32, u32)) -> Self {
-        let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
-        let view = |label| {
-            crate::gpu::target_texture(&gpu.device, label, format, size, usage)
-                .create_view(&Default::default())
+        // egui samples its textures as sRGB-encoded values: it gets views of the same texels
+        // without the sRGB decoding (through an sRGB view the thumbnails came out too dark).
+        let encoded = format.remove_srgb_suffix();
+        let texture = |label| {
+            gpu.device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(label),
+                size: wgpu::Extent3d {
+                    width: size.0,
+                    height: size.1,
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                    | wgpu::TextureUsages::TEXTURE_BINDING,
+                view_formats: &[encoded],
+            })
         };
+        let textures = [
+            texture("workbench colour"),
+            texture("workbench depth picture"),
+            texture("workbench stencil picture"),
+        ];
         Self {
             size,
-            views: [
-                view("workbench colour"),
-                view("workbench depth picture"),
-                view("workbench stencil picture"),
-            ],
+            views: textures
+                .each_ref()
+                .map(|t| t.create_view(&Default::default())),
+            encoded: textures.each_ref().map(|t| {
+                t.create_view(&wgpu::TextureViewDescriptor {
+                    label: Some("workbench picture for egui"),
+                    format: Some(encoded),
+                    ..Default::default()
+                })
+            }),
         }
     }
 }
