@@ -454,7 +454,7 @@ mod tests {
                     <details><summary>Answer</summary>\n\n![x](images/a.png)\n\n</details>\n\n\
                     ### Sub\n\n```sh\ncargo run -p a\n```\n\n<details><summary>Answer</summary>\n\n\
                     no picture\n\n</details>\n\n## Exercises\n\n### Exercise 1: one\n\n\
-                    {{#include ../x/examples/exercise-1.rs:solution}}\n\n## Next\n";
+                    {{#include ../x/examples/exercise-2-1.rs:solution}}\n\n## Next\n";
         let all = sections(page);
         assert_eq!(all.len(), 7, "{all:?}");
         assert_eq!(all[1].title, "T");
@@ -472,7 +472,7 @@ mod tests {
         assert_eq!(exercises.len(), 1);
         assert_eq!(
             exercises[0].includes,
-            ["include ../x/examples/exercise-1.rs:solution"]
+            ["include ../x/examples/exercise-2-1.rs:solution"]
         );
         let notes = "<details class=\"speaker-notes\"><summary>Speaker notes · 25 minutes</summary>\n\
                      <summary>Speaker notes · soon</summary>";

@@ -168,7 +168,8 @@ fn every_lesson_page_asks_predictions_its_pictures_answer() {
 
 /// Every lesson page has an `## Exercises` section with at least two `### Exercise K` headings, each
 /// followed (before the next heading) by the include of its solution,
-/// `.../chapters/NN-<lesson>/examples/exercise-K.rs:solution`. (That the include resolves is
+/// `.../chapters/NN-<lesson>/examples/exercise-N-K.rs:solution` (N the lesson's number: example
+/// names are unique in the workspace, since cargo puts every example binary in one folder). (That the include resolves is
 /// checked by `every_include_and_image_of_the_book_resolves`.)
 #[test]
 fn every_lesson_page_has_exercises_with_their_solutions() {
@@ -193,7 +194,7 @@ fn every_lesson_page_has_exercises_with_their_solutions() {
                         .unwrap_or("")
                 })
                 .unwrap_or("");
-            let solution = format!("{chapter}exercise-{number}.rs:solution");
+            let solution = format!("{chapter}exercise-{}-{number}.rs:solution", index + 1);
             let included = exercise
                 .includes
                 .iter()

@@ -9,10 +9,10 @@ use workbook::room::camera::BOOK_POSE;
 use workbook::room::scene::{CLEAR_SRGB, FLOOR_DEPTH, SKULL_CENTRE, WALL_HALF_WIDTH, WALL_HEIGHT};
 use workbook_tests::geometry::{View, hit_y0_rect, hit_z0_rect};
 
-#[path = "../../../../chapters/01-depth-test/examples/exercise-1.rs"]
+#[path = "../../../../chapters/01-depth-test/examples/exercise-1-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/01-depth-test/examples/exercise-2.rs"]
+#[path = "../../../../chapters/01-depth-test/examples/exercise-1-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

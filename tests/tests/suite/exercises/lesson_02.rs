@@ -8,10 +8,10 @@ use workbook::app::headless::{self, Capture, Request};
 use workbook::glam::Vec2;
 use workbook::room::scene::CLEAR_SRGB;
 
-#[path = "../../../../chapters/02-stencil-basics/examples/exercise-1.rs"]
+#[path = "../../../../chapters/02-stencil-basics/examples/exercise-2-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/02-stencil-basics/examples/exercise-2.rs"]
+#[path = "../../../../chapters/02-stencil-basics/examples/exercise-2-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

@@ -11,10 +11,10 @@ use workbook::room::scene::{
 };
 use workbook_tests::geometry::{View, hit_box, hit_z0_rect, passes_near};
 
-#[path = "../../../../chapters/03-mark-mirror/examples/exercise-1.rs"]
+#[path = "../../../../chapters/03-mark-mirror/examples/exercise-3-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/03-mark-mirror/examples/exercise-2.rs"]
+#[path = "../../../../chapters/03-mark-mirror/examples/exercise-3-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

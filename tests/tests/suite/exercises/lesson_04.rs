@@ -12,10 +12,10 @@ use workbook::room::scene::{
 use workbook::{Lesson, Stop};
 use workbook_tests::geometry::{View, passes_near};
 
-#[path = "../../../../chapters/04-reflect-skull/examples/exercise-1.rs"]
+#[path = "../../../../chapters/04-reflect-skull/examples/exercise-4-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/04-reflect-skull/examples/exercise-2.rs"]
+#[path = "../../../../chapters/04-reflect-skull/examples/exercise-4-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

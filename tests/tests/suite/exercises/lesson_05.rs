@@ -12,10 +12,10 @@ use workbook::room::scene::{
 use workbook::{Lesson, Stop};
 use workbook_tests::geometry::{View, hit_y0_rect, passes_near};
 
-#[path = "../../../../chapters/05-winding-fix/examples/exercise-1.rs"]
+#[path = "../../../../chapters/05-winding-fix/examples/exercise-5-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/05-winding-fix/examples/exercise-2.rs"]
+#[path = "../../../../chapters/05-winding-fix/examples/exercise-5-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

@@ -7,10 +7,10 @@ use workbook::app::headless::{self, Capture, Request};
 use workbook::gpu::{linear_to_srgb, srgb_to_linear};
 use workbook::{Lesson, Stop};
 
-#[path = "../../../../chapters/06-transparent-mirror/examples/exercise-1.rs"]
+#[path = "../../../../chapters/06-transparent-mirror/examples/exercise-6-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/06-transparent-mirror/examples/exercise-2.rs"]
+#[path = "../../../../chapters/06-transparent-mirror/examples/exercise-6-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

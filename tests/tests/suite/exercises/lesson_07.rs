@@ -2,10 +2,10 @@
 //! mirror behind the water (no fringe), and the reflection then covers the water there. 2: opaque
 //! first, transparent last leaves the crate's pixels unmarked and gives the default order's picture.
 
-#[path = "../../../../chapters/07-drawing-order/examples/exercise-1.rs"]
+#[path = "../../../../chapters/07-drawing-order/examples/exercise-7-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/07-drawing-order/examples/exercise-2.rs"]
+#[path = "../../../../chapters/07-drawing-order/examples/exercise-7-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

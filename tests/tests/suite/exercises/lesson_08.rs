@@ -2,10 +2,10 @@
 //! stone is then blended over the crate. 2: the wire-fence crate's image shows in the stone where
 //! the ray, continued below the floor, meets the fence's mirror image, and nowhere else changes.
 
-#[path = "../../../../chapters/08-floor-mirror/examples/exercise-1.rs"]
+#[path = "../../../../chapters/08-floor-mirror/examples/exercise-8-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/08-floor-mirror/examples/exercise-2.rs"]
+#[path = "../../../../chapters/08-floor-mirror/examples/exercise-8-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

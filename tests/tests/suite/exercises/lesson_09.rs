@@ -4,10 +4,10 @@
 //! where the crate's image is. 2: the wall mirror made a texture mirror shows what the lesson's
 //! `plane=wall` shows, except where it sees the stone.
 
-#[path = "../../../../chapters/09-render-to-texture/examples/exercise-1.rs"]
+#[path = "../../../../chapters/09-render-to-texture/examples/exercise-9-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/09-render-to-texture/examples/exercise-2.rs"]
+#[path = "../../../../chapters/09-render-to-texture/examples/exercise-9-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

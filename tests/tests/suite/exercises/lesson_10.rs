@@ -2,10 +2,10 @@
 //! half, once. 2: the crate's own shadow halves the floor where the crate blocks the key light (a ray
 //! cast from the floor towards the light), once, though the flattened cube lies there in two layers.
 
-#[path = "../../../../chapters/10-planar-shadow/examples/exercise-1.rs"]
+#[path = "../../../../chapters/10-planar-shadow/examples/exercise-10-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/10-planar-shadow/examples/exercise-2.rs"]
+#[path = "../../../../chapters/10-planar-shadow/examples/exercise-10-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

@@ -2,10 +2,10 @@
 //! and the reset and the level drawn after them paint the corridor over the crate. 2: mirrors that
 //! reflect 80% leave each pixel 0.8^k as bright as the lesson's, k its level in the lesson's stencil.
 
-#[path = "../../../../chapters/11-two-mirrors/examples/exercise-1.rs"]
+#[path = "../../../../chapters/11-two-mirrors/examples/exercise-11-1.rs"]
 #[allow(dead_code)]
 mod exercise_1;
-#[path = "../../../../chapters/11-two-mirrors/examples/exercise-2.rs"]
+#[path = "../../../../chapters/11-two-mirrors/examples/exercise-11-2.rs"]
 #[allow(dead_code)]
 mod exercise_2;
 

@@ -1,4 +1,4 @@
-//! The exercises' solutions (`chapters/NN-name/examples/exercise-K.rs`), each tested by what its
+//! The exercises' solutions (`chapters/NN-name/examples/exercise-N-K.rs`), each tested by what its
 //! exercise asks for, and each with a counterpart that shows the lesson alone does not already do it:
 //! no exercise can be a no-op. The solutions are compiled into this binary through `#[path]`
 //! modules, so wgpu is linked once.
