@@ -195,6 +195,181 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
         .with_context(|| format!("{} {}", case.lesson, case.settings.join(" ")))
 }
 
+/// The window's panel, measured: a lesson's window frame drawn by the workbench into a texture
+/// (the window's own code, without a display: a real GPU's machine has none), with the panel and
+/// with it hidden (`H`), each frame waited for as a window waits for the display.
+#[derive(Debug, Clone)]
+pub struct PanelCost {
+    pub lesson: &'static str,
+    pub size: (u32, u32),
+    pub adapter: String,
+    /// Wall time per frame in ms, median, 10th and 90th percentile: the lesson alone, and with
+    /// the panel.
+    pub without: [f64; 3],
+    pub with: [f64; 3],
+    /// The process's CPU time per frame, all its threads, in ms: the lesson alone and with the
+    /// panel. On a software GPU this is the GPU's work too, and steadier than wall time on a busy
+    /// machine. Where the system does not say (not Linux), `None`.
+    pub cpu: Option<(f64, f64)>,
+    /// The CPU's time to build, record and submit the frame (the median, ms): the lesson alone,
+    /// and with the panel (egui's layout and painting included).
+    pub recorded: (f64, f64),
+}
+
+/// The CPU time this process's threads have used so far, in ms (Linux: each thread's
+/// `/proc/self/task/*/schedstat`, in nanoseconds; threads that ended are not counted, and the
+/// software GPU's threads live as long as the process).
+fn process_cpu_ms() -> Option<f64> {
+    let mut total_ns = 0u64;
+    for task in std::fs::read_dir("/proc/self/task").ok()? {
+        let stat = std::fs::read_to_string(task.ok()?.path().join("schedstat")).ok()?;
+        total_ns += stat.split_whitespace().next()?.parse::<u64>().ok()?;
+    }
+    Some(total_ns as f64 / 1e6)
+}
+
+impl PanelCost {
+    /// What the panel adds, as a share of the frame without it.
+    pub fn added(&self) -> f64 {
+        self.with[0] / self.without[0] - 1.0
+    }
+}
+
+/// Measures the panel's cost in one lesson (default knobs).
+pub fn measure_panel(lesson: &'static str, size: (u32, u32), plan: &Plan) -> Result<PanelCost> {
+    struct Run<'a>(&'static str, (u32, u32), &'a Plan);
+    impl ForLesson for Run<'_> {
+        type Output = Result<PanelCost>;
+        fn run<L: Lesson>(self) -> Self::Output {
+            use clap::{CommandFactory, FromArgMatches};
+            use workbook::app::args::Args;
+            use workbook::app::workbench::headless::HeadlessWorkbench;
+            let Run(lesson, size, plan) = self;
+            let size_arg = format!("{}x{}", size.0, size.1);
+            let matches = Args::command().try_get_matches_from([L::NAME, "--size", &size_arg])?;
+            let args = Args::from_arg_matches(&matches)?;
+            let mut bench = HeadlessWorkbench::<L>::new(&args)?;
+            // The panel compares the view with the book's picture when they match: a thread of
+            // its own, once. Warm up until it is done, and both ways.
+            let mut warm_up = 0;
+            while warm_up < plan.warm_up || bench.workbench.comparing() {
+                bench.set_panel(warm_up % 2 == 1);
+                bench.frame()?;
+                warm_up += 1;
+            }
+            // Then in rounds, the lesson alone and with the panel taking turns, so that a machine
+            // busier at one moment than at another weighs on both alike. The first frames after
+            // a turn resize the view: not counted.
+            const ROUNDS: usize = 4;
+            const SETTLE: usize = 2;
+            let (mut times, mut cpu) = ([Vec::new(), Vec::new()], [Some(0.0); 2]);
+            let mut recorded = [Vec::new(), Vec::new()];
+            for _ in 0..ROUNDS {
+                for (shown, ((times, cpu), recorded)) in times
+                    .iter_mut()
+                    .zip(&mut cpu)
+                    .zip(&mut recorded)
+                    .enumerate()
+                {
+                    bench.set_panel(shown == 1);
+                    for _ in 0..SETTLE {
+                        bench.frame()?;
+                    }
+                    let cpu_from = process_cpu_ms();
+                    for _ in 0..plan.frames.div_ceil(ROUNDS) {
+                        let start = std::time::Instant::now();
+                        recorded.push(bench.frame()?);
+                        times.push(start.elapsed().as_secs_f64() * 1e3);
+                    }
+                    let used = cpu_from.zip(process_cpu_ms()).map(|(from, to)| to - from);
+                    *cpu = cpu.zip(used).map(|(sum, used)| sum + used);
+                }
+            }
+            let per_frame =
+                |total: Option<f64>, times: &Vec<f64>| total.map(|t| t / times.len() as f64);
+            let (without, with) = (spread(&times[0]), spread(&times[1]));
+            let (cpu_without, cpu_with) =
+                (per_frame(cpu[0], &times[0]), per_frame(cpu[1], &times[1]));
+            let info = bench.runner.gpu.adapter.get_info();
+            Ok(PanelCost {
+                lesson,
+                size,
+                adapter: format!("{} ({:?}, {})", info.name, info.backend, info.driver_info),
+                without,
+                with,
+                cpu: cpu_without.zip(cpu_with),
+                recorded: (spread(&recorded[0])[0], spread(&recorded[1])[0]),
+            })
+        }
+    }
+    for_lesson(lesson, Run(lesson, size, plan))?.with_context(|| format!("{lesson} with its panel"))
+}
+
+/// The panel's table: one line per lesson.
+pub fn panel_table(results: &[PanelCost]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{:<20} {:>9} {:>9} {:>9} {:>6} {:>11} {:>11} {:>11} {:>11}",
+        "lesson",
+        "size",
+        "alone ms",
+        "panel ms",
+        "added",
+        "CPU alone",
+        "CPU panel",
+        "rec. alone",
+        "rec. panel"
+    );
+    for m in results {
+        let cpu = match m.cpu {
+            Some((alone, with)) => format!("{alone:>11.2} {with:>11.2}"),
+            None => format!("{:>11} {:>11}", "n/a", "n/a"),
+        };
+        let _ = writeln!(
+            out,
+            "{:<20} {:>9} {:>9.2} {:>9.2} {:>5.0}% {cpu} {:>11.3} {:>11.3}",
+            m.lesson,
+            format!("{}x{}", m.size.0, m.size.1),
+            m.without[0],
+            m.with[0],
+            m.added() * 100.0,
+            m.recorded.0,
+            m.recorded.1
+        );
+    }
+    out
+}
+
+/// The panel's CSV header: one row per lesson.
+pub const PANEL_CSV_HEADER: &str = "adapter,lesson,width,height,alone_ms_median,alone_ms_p10,alone_ms_p90,panel_ms_median,panel_ms_p10,panel_ms_p90,added,cpu_alone_ms,cpu_panel_ms,record_alone_ms,record_panel_ms";
+
+pub fn panel_csv(results: &[PanelCost]) -> String {
+    let mut out = format!("{PANEL_CSV_HEADER}\n");
+    for m in results {
+        let _ = writeln!(
+            out,
+            "\"{}\",{},{},{},{:.3},{:.3},{:.3},{:.3},{:.3},{:.3},{:.3},{},{},{:.4},{:.4}",
+            m.adapter,
+            m.lesson,
+            m.size.0,
+            m.size.1,
+            m.without[0],
+            m.without[1],
+            m.without[2],
+            m.with[0],
+            m.with[1],
+            m.with[2],
+            m.added(),
+            m.cpu.map_or(String::new(), |c| format!("{:.2}", c.0)),
+            m.cpu.map_or(String::new(), |c| format!("{:.2}", c.1)),
+            m.recorded.0,
+            m.recorded.1,
+        );
+    }
+    out
+}
+
 /// Median, 10th and 90th percentile.
 pub fn spread(values: &[f64]) -> [f64; 3] {
     let mut sorted = values.to_vec();

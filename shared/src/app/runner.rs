@@ -108,6 +108,21 @@ impl<L: Lesson> Runner<L> {
         Ok((encoder, steps))
     }
 
+    /// Draws the lesson alone into `target` of `size` pixels (a window's surface with the panel
+    /// hidden), as the headless runner draws it, and submits.
+    pub fn draw_alone(
+        &mut self,
+        target: &wgpu::TextureView,
+        (width, height): (u32, u32),
+        stop: Stop,
+        show: Show,
+    ) -> Result<()> {
+        self.resize(width, height);
+        let (encoder, _) = self.record(target, stop, show, target)?;
+        self.gpu.queue.submit([encoder.finish()]);
+        Ok(())
+    }
+
     /// Records the frame into `color` up to `stop` and, given `pictures`, paints the depth and stencil
     /// buffers, as they are then, into them (the depth linearised, or the stored values with
     /// `raw_depth`; not at all where the backend cannot read depth in a shader). Where the frame stops

@@ -26,7 +26,14 @@ use crate::room::camera::Camera;
 
 /// Opens the lesson in a window and runs until it is closed (or `--frames` frames were shown).
 pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
-    let event_loop = EventLoop::new().map_err(|error| {
+    let mut builder = EventLoop::builder();
+    // X11 and Wayland serve a window from any thread: tests open lessons' windows from theirs.
+    #[cfg(all(unix, not(target_vendor = "apple")))]
+    {
+        winit::platform::x11::EventLoopBuilderExtX11::with_any_thread(&mut builder, true);
+        winit::platform::wayland::EventLoopBuilderExtWayland::with_any_thread(&mut builder, true);
+    }
+    let event_loop = builder.build().map_err(|error| {
         // winit says e.g. "os error at <file>:<line>: neither WAYLAND_DISPLAY nor ... is set."
         let text = error.to_string();
         let reason = text.rsplit(": ").next().unwrap_or(&text).trim().trim_end_matches('.');
@@ -68,6 +75,8 @@ struct State<L: Lesson> {
     /// The step the frame stops after, and the buffer shown.
     viewing: Viewing,
     workbench: Workbench<L>,
+    /// The window's events, as egui takes them.
+    panel_input: egui_winit::State,
     drag_from: Option<PhysicalPosition<f64>>,
     cursor: PhysicalPosition<f64>,
     modifiers: ModifiersState,
@@ -101,6 +110,10 @@ impl<L: Lesson> App<'_, L> {
             config.format = *srgb;
         }
         config.present_mode = wgpu::PresentMode::AutoVsync;
+        // The workbench copies its panel's picture into the frame where it may.
+        if caps.usages.contains(wgpu::TextureUsages::COPY_DST) {
+            config.usage |= wgpu::TextureUsages::COPY_DST;
+        }
         check_size(&gpu, config.width, config.height)?;
         surface.configure(&gpu.device, &config);
         let knobs = self.knobs.take().context("the window was opened twice")?;
@@ -117,7 +130,15 @@ impl<L: Lesson> App<'_, L> {
         if !runner.can_show(show) {
             anyhow::bail!(crate::gpu::views::DepthViewPipelines::UNSUPPORTED);
         }
-        let workbench = Workbench::new(&window, &runner, self.args)?;
+        let workbench = Workbench::new(&runner, self.args)?;
+        let panel_input = egui_winit::State::new(
+            workbench.context().clone(),
+            egui::ViewportId::ROOT,
+            &window,
+            Some(window.scale_factor() as f32),
+            window.theme(),
+            Some(runner.gpu.max_size() as usize),
+        );
         let state = State {
             window,
             surface,
@@ -125,6 +146,7 @@ impl<L: Lesson> App<'_, L> {
             runner,
             viewing: Viewing { stop, show },
             workbench,
+            panel_input,
             drag_from: None,
             cursor: PhysicalPosition::new(0.0, 0.0),
             modifiers: ModifiersState::empty(),
@@ -298,17 +320,22 @@ impl<L: Lesson> State<L> {
         });
         let mut again = false;
         if self.workbench.visible {
-            let size = (self.config.width, self.config.height);
             let (runner, viewing) = (&mut self.runner, &mut self.viewing);
-            again = self
+            let input = self.panel_input.take_egui_input(&self.window);
+            let drawn = self
                 .workbench
-                .draw(&self.window, runner, viewing, &view, size)?;
+                .draw(input, runner, viewing, &frame.texture)?;
+            self.panel_input
+                .handle_platform_output(&self.window, drawn.platform);
+            if drawn.repaint_now {
+                self.window.request_redraw();
+            }
+            again = drawn.again;
         } else {
             // The lesson alone, straight into the window, as the headless runner draws it.
-            self.runner.resize(self.config.width, self.config.height);
-            let (stop, show) = (self.viewing.stop, self.viewing.show);
-            let (encoder, _) = self.runner.record(&view, stop, show, &view)?;
-            self.runner.gpu.queue.submit([encoder.finish()]);
+            let size = (self.config.width, self.config.height);
+            let Viewing { stop, show } = self.viewing;
+            self.runner.draw_alone(&view, size, stop, show)?;
         }
         self.window.pre_present_notify();
         self.runner.gpu.queue.present(frame);
@@ -322,6 +349,26 @@ impl<L: Lesson> State<L> {
             self.window.request_redraw();
         }
         Ok(true)
+    }
+
+    /// Gives the panel the event; returns whether the panel takes it for itself (a click or a wheel
+    /// over the panel).
+    fn panel_event(&mut self, event: &WindowEvent) -> bool {
+        // egui asks for a frame after each frame drawn (it takes RedrawRequested for input):
+        // the window would never rest.
+        if !self.workbench.visible || matches!(event, WindowEvent::RedrawRequested) {
+            return false;
+        }
+        let response = self.panel_input.on_window_event(&self.window, event);
+        if response.repaint {
+            self.window.request_redraw();
+        }
+        match event {
+            WindowEvent::MouseInput { .. } | WindowEvent::MouseWheel { .. } => {
+                self.workbench.context().is_pointer_over_egui()
+            }
+            _ => false,
+        }
     }
 
     /// Number keys cycle the knobs; returns whether anything changed.
@@ -398,7 +445,7 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
         };
         let mut changed = false;
         // The panel sees every event first; a click or a wheel over it is not the camera's.
-        let over_panel = state.workbench.on_event(&state.window, &event);
+        let over_panel = state.panel_event(&event);
         let result: Result<()> = (|| {
             match event {
                 WindowEvent::CloseRequested => event_loop.exit(),
@@ -409,6 +456,9 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
                 WindowEvent::RedrawRequested => {
                     if state.redraw()? {
                         self.frames += 1;
+                        // `RUST_LOG=workbook::frames=debug` lists the frames: a test checks that
+                        // an idle window draws none.
+                        log::debug!(target: "workbook::frames", "frame {} drawn", self.frames);
                     }
                     match self.args.frames {
                         Some(limit) if self.frames >= limit => event_loop.exit(),

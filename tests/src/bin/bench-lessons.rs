@@ -1,5 +1,6 @@
 //! `cargo bench-lessons [--quick] [--out PREFIX]`: measures every lesson (see `workbook_tests::bench`)
-//! in a release build, prints the table, and writes PREFIX.csv and PREFIX-<size>.svg.
+//! in a release build, prints the table, and writes PREFIX.csv and PREFIX-<size>.svg; then the
+//! window's panel, every lesson's frame with and without it, into PREFIX-panel.csv.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -78,10 +79,29 @@ fn main() -> ExitCode {
             peak.trim_start_matches("VmHWM:").trim()
         );
     }
+    // The window's panel: every lesson at the window's size (the quick run: one, smaller).
+    let (panel_size, panel_lessons) = match args.quick {
+        true => ((640, 360), &workbook_tests::shots::LESSONS[3..4]),
+        false => ((1280, 720), workbook_tests::shots::LESSONS),
+    };
+    let mut panel = Vec::new();
+    for lesson in panel_lessons {
+        match bench::measure_panel(lesson, panel_size, &plan) {
+            Ok(measured) => panel.push(measured),
+            Err(error) => {
+                eprintln!("bench-lessons: error: {error:#}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    println!("\nthe window's frame, the lesson alone and with the panel (wall time, waited for):");
+    print!("{}", bench::panel_table(&panel));
     println!("measured in {:.0?}", started.elapsed());
     if let Some(prefix) = args.out {
         let csv = prefix.with_extension("csv");
+        let panel_csv = PathBuf::from(format!("{}-panel.csv", prefix.display()));
         let written = std::fs::write(&csv, bench::csv(&results)).and_then(|()| {
+            std::fs::write(&panel_csv, bench::panel_csv(&panel))?;
             for size in &plan.sizes {
                 let name = format!("{}-{}x{}.svg", prefix.display(), size.0, size.1);
                 let title = format!("GPU time per frame, {}x{}, {adapter}", size.0, size.1);

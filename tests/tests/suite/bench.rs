@@ -2,7 +2,8 @@
 //! positive and the steps sum to no more than the frame's wall time; the benchmark runs in its quick
 //! form and its CSV has the columns the book's page reads.
 
-use workbook_tests::bench::{self, CSV_HEADER, Case, Plan};
+use workbook_tests::bench::{self, CSV_HEADER, Case, PANEL_CSV_HEADER, Plan};
+use workbook_tests::shots::LESSONS;
 
 #[test]
 fn step_times_are_positive_and_fit_in_the_frame() {
@@ -81,13 +82,20 @@ fn the_cost_page_shows_benchmark_output() {
             continue;
         }
         let text = std::fs::read_to_string(&path).unwrap();
+        let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
+        // The window's panel: one row per lesson, beside the same adapter's main figures.
+        if let Some(adapter) = stem.strip_suffix("-panel") {
+            assert_eq!(text.lines().next(), Some(PANEL_CSV_HEADER), "{}", path.display());
+            assert_eq!(text.lines().count(), LESSONS.len() + 1, "{}", path.display());
+            assert!(dir.join(format!("{adapter}.csv")).exists(), "{adapter}.csv");
+            continue;
+        }
         assert_eq!(text.lines().next(), Some(CSV_HEADER), "{}", path.display());
         assert!(
             text.lines().count() > 50,
             "{}: too few rows",
             path.display()
         );
-        let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
         for size in ["1280x720", "1920x1080"] {
             assert!(
                 dir.join(format!("{stem}-{size}.svg")).exists(),
@@ -99,5 +107,30 @@ fn the_cost_page_shows_benchmark_output() {
     assert!(
         found >= 2,
         "the cost page needs lavapipe's and a real GPU's figures"
+    );
+}
+
+/// The panel's part of the benchmark, quick: both frame times positive, the CSV row of the
+/// header's columns.
+#[test]
+fn the_panels_cost_is_measured() {
+    let plan = Plan {
+        sizes: vec![(640, 360)],
+        warm_up: 2,
+        frames: 4,
+        defaults_only: true,
+    };
+    let measured = bench::measure_panel("stencil-basics", (640, 360), &plan).unwrap();
+    assert!(measured.without[0] > 0.0 && measured.with[0] > 0.0, "{measured:?}");
+    assert!(measured.recorded.0 > 0.0 && measured.recorded.1 > 0.0, "{measured:?}");
+    let csv = bench::panel_csv(&[measured]);
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some(PANEL_CSV_HEADER));
+    let row = lines.next().unwrap();
+    let outside_quotes = row.rsplit('"').next().unwrap();
+    assert_eq!(
+        outside_quotes.split(',').count(),
+        PANEL_CSV_HEADER.split(',').count(),
+        "{row}"
     );
 }

@@ -27,3 +27,4 @@ mod truth_table;
 mod two_mirrors;
 mod validation;
 mod winding_fix;
+mod windows;

@@ -118,15 +118,17 @@ fn choosing_a_knob_in_the_panel_renders_as_set_does() {
 fn the_panel_says_gpu_time_or_cpu_time() {
     let gpu = Cost {
         steps_ms: Some(vec![0.5, 2.0]),
-        frame_ms: 4.0,
-        fps: None,
+        cpu_ms: 1.0,
+        frame_ms: Some(4.0),
+        fps: Some(250.0),
     };
     let harness_gpu = harness(&[], Knobs::defaults(&[]), Some(gpu));
     harness_gpu.get_by_label("GPU time per step (timestamp queries):");
-    harness_gpu.get_by_label("2.500 ms");
+    harness_gpu.get_by_label("   2.500 ms");
     let cpu = Cost {
         steps_ms: None,
-        frame_ms: 4.0,
+        cpu_ms: 1.0,
+        frame_ms: None,
         fps: None,
     };
     let harness_cpu = harness(&[], Knobs::defaults(&[]), Some(cpu));
@@ -147,4 +149,62 @@ fn the_panel_asks_for_steps_and_hiding() {
     harness.get_by_label("Hide").click();
     harness.run();
     assert_eq!(harness.state(), &[Action::Step(1), Action::Hide]);
+}
+
+/// The panel's cost section, from the real workbench drawn headless frame after frame (the window's
+/// code, a texture for its surface): on an adapter with timestamp queries every step's GPU time is
+/// positive and the steps sum to no more than the frame time; without, there are no step times
+/// (and the panel says "CPU time only", as the test above shows).
+#[test]
+fn the_panels_step_times_are_positive_and_fit_in_the_frame() {
+    use clap::{CommandFactory, FromArgMatches};
+    use workbook::app::args::Args;
+    use workbook::app::workbench::headless::HeadlessWorkbench;
+    use workbook::wgpu;
+
+    let matches = Args::command()
+        .try_get_matches_from(["reflect-skull", "--size", "640x360"])
+        .unwrap();
+    let args = Args::from_arg_matches(&matches).unwrap();
+    let mut bench = HeadlessWorkbench::<reflect_skull::ReflectSkull>::new(&args).unwrap();
+    // Until the panel has a frame time (three frames within a second and a half) and the times of
+    // a frame the GPU finished.
+    for _ in 0..40 {
+        bench.frame().unwrap();
+        if bench
+            .cost()
+            .is_some_and(|c| c.frame_ms.is_some() && c.steps_ms.is_some())
+        {
+            break;
+        }
+    }
+    let steps = bench.runner.steps();
+    let timestamps = bench
+        .runner
+        .gpu
+        .device
+        .features()
+        .contains(wgpu::Features::TIMESTAMP_QUERY);
+    let cost = bench.cost().expect("a cost after a frame");
+    let frame_ms = cost
+        .frame_ms
+        .expect("frames drawn one after another have a frame time");
+    match &cost.steps_ms {
+        None => assert!(
+            !timestamps,
+            "the adapter has timestamp queries, the panel no times"
+        ),
+        Some(times) => {
+            assert!(timestamps);
+            assert_eq!(times.len(), steps.len(), "one time per step: {steps:?}");
+            for (step, ms) in steps.iter().zip(times) {
+                assert!(*ms > 0.0, "{step}: {ms} ms");
+            }
+            let sum: f64 = times.iter().sum();
+            assert!(
+                sum <= frame_ms,
+                "the steps take {sum:.3} ms of GPU time, more than the frame's {frame_ms:.3} ms"
+            );
+        }
+    }
 }

@@ -6,6 +6,7 @@
 //! [`panel`] draws the widgets and says what was asked; this module owns the GPU side (the three
 //! buffers as egui textures, the step timer, egui's renderer) and carries the asks out.
 
+pub mod headless;
 pub mod panel;
 
 use std::collections::VecDeque;
@@ -13,14 +14,12 @@ use std::sync::mpsc::{Receiver, channel};
 use std::time::Instant;
 
 use anyhow::{Context, Result};
-use winit::event::WindowEvent;
-use winit::window::Window;
 
 use crate::app::args::Args;
 use crate::app::runner::Runner;
 use crate::book::check::{self, Verdict};
 use crate::book::shots::{self, BookShot, Setting};
-use crate::gpu::timing::StepTimer;
+use crate::gpu::timing::LateTimer;
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
@@ -28,8 +27,12 @@ use crate::room::camera::{self, Camera};
 use crate::room::scene::SceneOptions;
 use panel::{Action, Book, Cost, Model};
 
+/// The frame time and rate are over the frames of the last this many seconds; fewer than three
+/// frames in it, and the window draws only on change.
+const CONTINUOUS_S: f64 = 1.5;
+
 /// How often the depth and stencil thumbnails follow a moving camera, in seconds.
-const PICTURES_EVERY_S: f64 = 0.25;
+const PICTURES_EVERY_S: f64 = 0.5;
 
 /// What the window and the panel both change: where the frame stops and what is shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -50,12 +53,17 @@ struct Buffers {
 pub struct Workbench<L: Lesson> {
     pub visible: bool,
     ctx: egui::Context,
-    input: egui_winit::State,
     renderer: egui_wgpu::Renderer,
     buffers: Buffers,
     ids: [egui::TextureId; 3],
-    timer: Option<StepTimer>,
+    timer: Option<LateTimer>,
     cost: Option<Cost>,
+    /// The cost as the panel shows it: the latest, twice a second.
+    shown_cost: Option<Cost>,
+    /// The camera as the panel shows it: while the view is dragged, twice a second.
+    shown_camera: Option<Camera>,
+    /// The panel as last painted (see `draw`).
+    panel_picture: Option<PanelPicture>,
     presented: VecDeque<Instant>,
     /// What the depth and stencil pictures were last painted for, and when.
     pictures_for: Option<(Knobs, Viewing, (u32, u32))>,
@@ -76,20 +84,23 @@ pub struct Workbench<L: Lesson> {
     _lesson: std::marker::PhantomData<L>,
 }
 
+/// What one frame of the workbench asks of whoever shows it.
+pub struct Drawn {
+    /// Something changed (a knob, a step, a comparison under way): draw again, for the panel to
+    /// show it.
+    pub again: bool,
+    /// egui asks for the next frame now (an animation, a tooltip).
+    pub repaint_now: bool,
+    /// What egui asks of the platform: the clipboard, the cursor.
+    pub platform: egui::PlatformOutput,
+}
+
 impl<L: Lesson> Workbench<L> {
-    pub fn new(window: &Window, runner: &Runner<L>, args: &Args) -> Result<Self> {
+    /// A workbench for `runner`; it draws into any target, a window's or a texture.
+    pub fn new(runner: &Runner<L>, args: &Args) -> Result<Self> {
         let gpu = &runner.gpu;
         let ctx = egui::Context::default();
         ctx.set_zoom_factor(args.ui_scale);
-        let max_texture = gpu.max_size() as usize;
-        let input = egui_winit::State::new(
-            ctx.clone(),
-            egui::ViewportId::ROOT,
-            window,
-            Some(window.scale_factor() as f32),
-            window.theme(),
-            Some(max_texture),
-        );
         // No dithering: the view must show the lesson's pixels as they are.
         let options = egui_wgpu::RendererOptions {
             dithering: false,
@@ -119,12 +130,14 @@ impl<L: Lesson> Workbench<L> {
         Ok(Self {
             visible: !args.no_panel,
             ctx,
-            input,
             renderer,
             buffers,
             ids,
-            timer: StepTimer::new(gpu),
+            timer: LateTimer::new(gpu),
             cost: None,
+            shown_cost: None,
+            shown_camera: None,
+            panel_picture: None,
             presented: VecDeque::new(),
             pictures_for: None,
             pictures_at: Instant::now(),
@@ -144,36 +157,38 @@ impl<L: Lesson> Workbench<L> {
         })
     }
 
-    /// Gives egui the event; returns whether egui wants it for itself (a click on the panel).
-    pub fn on_event(&mut self, window: &Window, event: &WindowEvent) -> bool {
-        if !self.visible {
-            return false;
-        }
-        let response = self.input.on_window_event(window, event);
-        if response.repaint {
-            window.request_redraw();
-        }
-        match event {
-            WindowEvent::MouseInput { .. } | WindowEvent::MouseWheel { .. } => {
-                self.ctx.is_pointer_over_egui()
-            }
-            _ => false,
-        }
+    /// What the panel's cost section shows: the last frame's.
+    pub fn cost(&self) -> Option<&Cost> {
+        self.cost.as_ref()
     }
 
-    /// Draws one frame into `target` (the window's surface texture, `size` pixels): the panel and,
-    /// beside it, the lesson at the view's size. Carries out what the panel asked; returns whether
-    /// anything changed (the window then draws again, for the panel to show it) and submits.
+    /// Whether a comparison with the book is under way (on a thread of its own).
+    pub fn comparing(&self) -> bool {
+        self.verdicts.is_some()
+    }
+
+    /// The egui context, for the window's input to feed.
+    pub fn context(&self) -> &egui::Context {
+        &self.ctx
+    }
+
+    /// Draws one frame into `target` (a window's surface texture or any texture of the colour
+    /// format, `size` pixels): the panel and, beside it, the lesson at the view's size. Carries out
+    /// what the panel asked (given `input`, egui's events since the last frame) and submits.
     pub fn draw(
         &mut self,
-        window: &Window,
+        input: egui::RawInput,
         runner: &mut Runner<L>,
         viewing: &mut Viewing,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
-    ) -> Result<bool> {
+        target: &wgpu::Texture,
+    ) -> Result<Drawn> {
         let start = Instant::now();
-        let raw_input = self.input.take_egui_input(window);
+        let raw_input = input;
+        let size = (target.width(), target.height());
+        let target_view = target.create_view(&wgpu::TextureViewDescriptor {
+            label: Some("workbench target"),
+            ..Default::default()
+        });
         let steps = runner.steps();
         let step = viewing.stop.resolve(&steps).unwrap_or(steps.len());
         let setting = setting(runner, *viewing);
@@ -188,9 +203,9 @@ impl<L: Lesson> Workbench<L> {
             show: viewing.show,
             can_show_depth: runner.can_show(Show::Depth),
             thumbnails: Some((self.ids, aspect)),
-            cost: self.cost.as_ref(),
+            cost: self.shown_cost.as_ref(),
             adapter: &self.adapter,
-            camera: runner.camera,
+            camera: self.shown_camera.unwrap_or(runner.camera),
             poses: &self.poses,
             book_shots: &self.book_names,
             book: &self.book,
@@ -216,11 +231,9 @@ impl<L: Lesson> Workbench<L> {
                 painter.image(id, rect, uv, egui::Color32::WHITE);
             }
         });
-        self.input
-            .handle_platform_output(window, output.platform_output);
         let changed = !actions.is_empty();
         for action in actions {
-            self.act(action, runner, viewing, window)?;
+            self.act(action, runner, viewing)?;
         }
 
         // The view: the rest of the window, in whole pixels.
@@ -240,26 +253,27 @@ impl<L: Lesson> Workbench<L> {
                     id,
                 );
             }
-            runner.resize(view_size.0, view_size.1);
         }
+        // The lesson drew at the window's full size while the panel was hidden.
+        runner.resize(view_size.0, view_size.1);
         let [color, depth, stencil] = &self.buffers.views;
         let raw_depth = viewing.show == Show::RawDepth;
         // The depth and stencil pictures cost a third of the frame on a software GPU (the stencil
         // one is nine full-window passes): paint them when what they show changed, when one is the
-        // view, and otherwise (the camera moving) four times a second.
+        // view, and otherwise (the camera moving) twice a second.
+        // The panel's own picture (its small buffers among it) follows them.
         let key = (runner.knobs.clone(), *viewing, view_size);
-        let fresh = self.pictures_for.as_ref() != Some(&key)
-            || viewing.show != Show::Color
+        let due = self.pictures_for.as_ref() != Some(&key)
             || self.pictures_at.elapsed().as_secs_f64() > PICTURES_EVERY_S;
+        let fresh = due || viewing.show != Show::Color;
         let pictures = fresh.then_some([depth, stencil]);
-        let (mut encoder, steps) = runner.record_buffers(
-            color,
-            pictures,
-            viewing.stop,
-            raw_depth,
-            self.timer.as_ref(),
-        )?;
-        if fresh {
+        let timer = match &mut self.timer {
+            Some(timer) => Some(timer.for_next_frame(&runner.gpu.device)?),
+            None => None,
+        };
+        let (mut encoder, steps) =
+            runner.record_buffers(color, pictures, viewing.stop, raw_depth, timer)?;
+        if due {
             self.pictures_for = Some(key);
             self.pictures_at = Instant::now();
         }
@@ -283,72 +297,143 @@ impl<L: Lesson> Workbench<L> {
             &runner.gpu.device,
             &mut encoder,
             shown,
-            target,
+            &target_view,
             fits.then_some(viewport),
         );
-        self.paint(
-            runner,
-            &mut encoder,
-            output.shapes,
-            output.textures_delta,
-            ppp,
-            target,
-            size,
-        );
-        runner.gpu.queue.submit([encoder.finish()]);
-        let recorded = steps.len().min(viewing.stop.count());
-        let steps_ms = match &self.timer {
-            Some(timer) => Some(timer.read(&runner.gpu.device, recorded)?),
-            None => {
-                runner
-                    .gpu
-                    .device
-                    .poll(wgpu::PollType::wait_indefinitely())
-                    .context("waiting for the GPU failed")?;
-                None
-            }
+        // The panel. egui's shader costs a software GPU 12 ms a frame for the panel's 330x720
+        // pixels alone, so the panel is painted into a picture of its own when it changed (a
+        // hover, a knob, the small buffers and the cost twice a second) and copied beside
+        // the view otherwise. What egui paints outside the panel (a dropdown's list, the FLIP
+        // difference over the view) is painted straight over the frame, as is everything where
+        // the target cannot be copied to.
+        let panel_left = if fits {
+            (viewport[0] + viewport[2]) as u32
+        } else {
+            0
         };
-        self.presented.push_back(Instant::now());
+        let panel = egui::Rect::from_min_max(
+            egui::pos2(panel_left as f32 / ppp, 0.0),
+            egui::pos2(size.0 as f32 / ppp, size.1 as f32 / ppp),
+        );
+        let inside = output.shapes.iter().all(|clipped| {
+            let bounds = clipped
+                .shape
+                .visual_bounding_rect()
+                .intersect(clipped.clip_rect);
+            !bounds.is_positive() || panel.expand(0.5).contains_rect(bounds)
+        });
+        let mut textures = output.textures_delta;
+        self.update_textures(runner, &textures);
+        if fits && inside && target.usage().contains(wgpu::TextureUsages::COPY_DST) {
+            let stale = due
+                || !textures.is_empty()
+                || self.panel_picture.as_ref().is_none_or(|picture| {
+                    picture.size != size
+                        || picture.pixels_per_point != ppp
+                        || picture.shapes != output.shapes
+                });
+            if stale {
+                let picture = match self.panel_picture.take() {
+                    Some(picture) if picture.size == size => picture,
+                    _ => PanelPicture::new(&runner.gpu.device, target.format(), size),
+                };
+                let shapes = output.shapes.clone();
+                self.paint(
+                    runner,
+                    &mut encoder,
+                    output.shapes,
+                    ppp,
+                    &picture.view,
+                    size,
+                );
+                self.panel_picture = Some(PanelPicture {
+                    shapes,
+                    pixels_per_point: ppp,
+                    ..picture
+                });
+            }
+            if let Some(picture) = &self.panel_picture {
+                picture.copy(&mut encoder, target, panel_left);
+            }
+        } else {
+            self.panel_picture = None;
+            self.paint(runner, &mut encoder, output.shapes, ppp, &target_view, size);
+        }
+        for id in &textures.free {
+            self.renderer.free_texture(id);
+        }
+        // Applied: egui checks that no delta is dropped unapplied.
+        textures.clear();
+        runner.gpu.queue.submit([encoder.finish()]);
+        let cpu_ms = start.elapsed().as_secs_f64() * 1000.0;
+        // The steps' times arrive when the GPU has run the frame, usually by the next one: the
+        // window never waits for the GPU to report a statistic.
+        let steps_ms = match &mut self.timer {
+            Some(timer) => {
+                timer.submitted(steps.len().min(viewing.stop.count()));
+                timer.latest(&runner.gpu.device)?.map(<[f64]>::to_vec)
+            }
+            None => None,
+        };
+        // Frames drawn one after another (a drag, `--frames`) have a frame time and a rate: the
+        // mean interval over the last second and a half. A window that draws only on change has
+        // neither.
+        self.presented.push_back(start);
         while self
             .presented
             .front()
-            .is_some_and(|t| t.elapsed().as_secs_f64() > 1.0)
+            .is_some_and(|t| t.elapsed().as_secs_f64() > CONTINUOUS_S)
         {
             self.presented.pop_front();
         }
+        let frame_ms = (self.presented.len() > 2).then(|| {
+            let (first, count) = (self.presented[0], self.presented.len() - 1);
+            (start - first).as_secs_f64() * 1000.0 / count as f64
+        });
         self.cost = Some(Cost {
             steps_ms,
-            frame_ms: start.elapsed().as_secs_f64() * 1000.0,
-            fps: (self.presented.len() > 2).then_some(self.presented.len() as f64),
+            cpu_ms,
+            frame_ms,
+            fps: frame_ms.map(|ms| 1000.0 / ms),
         });
-        if output
-            .viewport_output
-            .values()
-            .any(|v| v.repaint_delay.is_zero())
-        {
-            window.request_redraw();
+        // Figures that change every frame cannot be read, and would paint the panel every frame.
+        if self.shown_cost.is_none() || due {
+            self.shown_cost = self.cost.clone();
+            self.shown_camera = Some(runner.camera);
         }
-        Ok(changed || self.verdicts.is_some())
+        // A pose the panel shows that is no longer the camera's: draw until it is.
+        let stale_camera = self.shown_camera != Some(runner.camera);
+        Ok(Drawn {
+            again: changed || self.verdicts.is_some() || stale_camera,
+            repaint_now: output
+                .viewport_output
+                .values()
+                .any(|v| v.repaint_delay.is_zero()),
+            platform: output.platform_output,
+        })
     }
 
-    /// egui's textures and triangles, drawn over the whole target (the view is one of its images).
-    #[allow(clippy::too_many_arguments)]
-    fn paint(
-        &mut self,
-        runner: &Runner<L>,
-        encoder: &mut wgpu::CommandEncoder,
-        shapes: Vec<egui::epaint::ClippedShape>,
-        mut textures: egui::TexturesDelta,
-        pixels_per_point: f32,
-        target: &wgpu::TextureView,
-        (width, height): (u32, u32),
-    ) {
+    /// Gives egui's renderer the textures egui made or changed (its fonts, the FLIP difference).
+    fn update_textures(&mut self, runner: &Runner<L>, textures: &egui::TexturesDelta) {
         let (device, queue) = (&runner.gpu.device, &runner.gpu.queue);
         for (id, deltas) in &textures.set {
             for delta in deltas {
                 self.renderer.update_texture(device, queue, *id, delta);
             }
         }
+    }
+
+    /// egui's triangles, drawn over `target` of `(width, height)` pixels.
+    fn paint(
+        &mut self,
+        runner: &Runner<L>,
+        encoder: &mut wgpu::CommandEncoder,
+        shapes: Vec<egui::epaint::ClippedShape>,
+        pixels_per_point: f32,
+        target: &wgpu::TextureView,
+        (width, height): (u32, u32),
+    ) {
+        let (device, queue) = (&runner.gpu.device, &runner.gpu.queue);
         let jobs = self.ctx.tessellate(shapes, pixels_per_point);
         let screen = egui_wgpu::ScreenDescriptor {
             size_in_pixels: [width, height],
@@ -377,22 +462,10 @@ impl<L: Lesson> Workbench<L> {
             })
             .forget_lifetime();
         self.renderer.render(&mut pass, &jobs, &screen);
-        drop(pass);
-        for id in &textures.free {
-            self.renderer.free_texture(id);
-        }
-        // Applied: egui checks that no delta is dropped unapplied.
-        textures.clear();
     }
 
     /// Carries out one ask of the panel.
-    fn act(
-        &mut self,
-        action: Action,
-        runner: &mut Runner<L>,
-        viewing: &mut Viewing,
-        window: &Window,
-    ) -> Result<()> {
+    fn act(&mut self, action: Action, runner: &mut Runner<L>, viewing: &mut Viewing) -> Result<()> {
         match action {
             Action::Knob(index, value) => {
                 let mut knobs = runner.knobs.clone();
@@ -409,7 +482,10 @@ impl<L: Lesson> Workbench<L> {
                 };
             }
             Action::Show(show) => viewing.show = show,
-            Action::Camera(pose) => runner.camera = pose,
+            Action::Camera(pose) => {
+                runner.camera = pose;
+                self.shown_camera = None;
+            }
             Action::PrintCamera => println!("--camera {}", runner.camera),
             Action::CopyCamera => {
                 self.ctx.copy_text(format!("--camera {}", runner.camera));
@@ -429,7 +505,6 @@ impl<L: Lesson> Workbench<L> {
             Action::ShowDifference(shown) => self.show_difference = shown,
             Action::Hide => self.visible = false,
         }
-        window.request_redraw();
         Ok(())
     }
 
@@ -533,6 +608,58 @@ fn pixel_rect(rect: egui::Rect, pixels_per_point: f32) -> egui::Rect {
     let round =
         |p: egui::Pos2| (p.to_vec2() * pixels_per_point).round().to_pos2() / pixels_per_point;
     egui::Rect::from_min_max(round(rect.min), round(rect.max))
+}
+
+/// The panel as last painted, to be copied into frames in which it did not change.
+struct PanelPicture {
+    texture: wgpu::Texture,
+    view: wgpu::TextureView,
+    size: (u32, u32),
+    pixels_per_point: f32,
+    /// What egui painted into it.
+    shapes: Vec<egui::epaint::ClippedShape>,
+}
+
+impl PanelPicture {
+    /// A picture of the whole target's size (egui's coordinates are the target's).
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat, size: (u32, u32)) -> Self {
+        let texture = crate::gpu::target_texture(
+            device,
+            "workbench panel picture",
+            format,
+            size,
+            wgpu::TextureUsages::COPY_SRC,
+        );
+        Self {
+            view: texture.create_view(&Default::default()),
+            texture,
+            size,
+            pixels_per_point: 0.0,
+            shapes: Vec::new(),
+        }
+    }
+
+    /// Copies the panel's part, from `left` to the right edge, into the same place of `target`.
+    fn copy(&self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::Texture, left: u32) {
+        let at = |texture| wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d {
+                x: left,
+                y: 0,
+                z: 0,
+            },
+            aspect: wgpu::TextureAspect::All,
+        };
+        let extent = wgpu::Extent3d {
+            width: self.size.0.saturating_sub(left),
+            height: self.size.1,
+            depth_or_array_layers: 1,
+        };
+        if extent.width > 0 {
+            encoder.copy_texture_to_texture(at(&self.texture), at(target), extent);
+        }
+    }
 }
 
 impl Buffers {

@@ -50,9 +50,11 @@ pub enum Book {
 pub struct Cost {
     /// Each step's GPU time in milliseconds, from timestamp queries; `None` without them.
     pub steps_ms: Option<Vec<f64>>,
-    /// From the start of recording until the GPU finished the frame (lesson and panel).
-    pub frame_ms: f64,
-    /// Frames per second over the last second, when the window draws continuously.
+    /// The CPU's time to record and submit the frame (lesson and panel), in milliseconds.
+    pub cpu_ms: f64,
+    /// From one frame to the next, over the last second, when the window draws continuously;
+    /// `None` when it draws only on change.
+    pub frame_ms: Option<f64>,
     pub fps: Option<f64>,
 }
 
@@ -221,15 +223,13 @@ fn cost(ui: &mut Ui, model: &Model<'_>) {
                 for (name, ms) in model.steps.iter().zip(times) {
                     ui.label(*name);
                     ui.with_layout(Layout::right_to_left(Align::Center), |ui| {
-                        ui.label(format!("{ms:.3} ms"));
+                        ui.label(milliseconds(*ms));
                     });
                     ui.end_row();
                 }
                 ui.label(RichText::new("all steps").strong());
                 ui.with_layout(Layout::right_to_left(Align::Center), |ui| {
-                    ui.label(
-                        RichText::new(format!("{:.3} ms", times.iter().sum::<f64>())).strong(),
-                    );
+                    ui.label(milliseconds(times.iter().sum()).strong());
                 });
                 ui.end_row();
             });
@@ -241,11 +241,18 @@ fn cost(ui: &mut Ui, model: &Model<'_>) {
             );
         }
     }
-    let fps = cost.fps.unwrap_or(1000.0 / cost.frame_ms.max(1e-3));
-    ui.label(format!(
-        "Frame (record to GPU done, CPU time): {:.2} ms · {fps:.0} frames/s",
-        cost.frame_ms
-    ));
+    ui.label(format!("CPU, record and submit: {:.2} ms", cost.cpu_ms));
+    match (cost.frame_ms, cost.fps) {
+        (Some(ms), Some(fps)) => ui.label(format!("Frame: {ms:.1} ms · {fps:.0} frames/s")),
+        _ => ui.label("Frame: drawn on change (drag the view for frames/s)"),
+    };
+}
+
+/// A time in a column of times: monospace and of one width, so that the column keeps its width
+/// from frame to frame (a grid whose columns change width asks egui for another frame, and the
+/// window would never rest).
+fn milliseconds(ms: f64) -> RichText {
+    RichText::new(format!("{ms:>8.3} ms")).monospace()
 }
 
 /// The pose as `--camera` takes it, and the book's poses.
