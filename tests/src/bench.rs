@@ -241,13 +241,11 @@ pub fn measure_panel(lesson: &'static str, size: (u32, u32), plan: &Plan) -> Res
     impl ForLesson for Run<'_> {
         type Output = Result<PanelCost>;
         fn run<L: Lesson>(self) -> Self::Output {
-            use clap::{CommandFactory, FromArgMatches};
             use workbook::app::args::Args;
             use workbook::app::workbench::headless::HeadlessWorkbench;
             let Run(lesson, size, plan) = self;
             let size_arg = format!("{}x{}", size.0, size.1);
-            let matches = Args::command().try_get_matches_from([L::NAME, "--size", &size_arg])?;
-            let args = Args::from_arg_matches(&matches)?;
+            let args = Args::parse_for::<L>([L::NAME, "--size", &size_arg])?;
             let mut bench = HeadlessWorkbench::<L>::new(&args)?;
             // The panel compares the view with the book's picture when they match: a thread of
             // its own, once. Warm up until it is done, and both ways.

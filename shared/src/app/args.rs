@@ -99,6 +99,16 @@ fn parse_scale(text: &str) -> Result<f32, String> {
 }
 
 impl Args {
+    /// The command line of lesson `L` (the first argument is the program's name), as its binary
+    /// parses it.
+    pub fn parse_for<L: Lesson>(
+        args: impl IntoIterator<Item = impl Into<std::ffi::OsString> + Clone>,
+    ) -> Result<Self, clap::Error> {
+        use clap::{CommandFactory, FromArgMatches};
+        let command = Self::command().name(L::NAME).about(L::TITLE);
+        Self::from_arg_matches(&command.try_get_matches_from(args)?)
+    }
+
     pub fn scene(&self) -> SceneOptions {
         SceneOptions {
             assets: self.assets.clone().unwrap_or_else(default_assets),

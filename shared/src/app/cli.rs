@@ -4,14 +4,11 @@
 use std::ffi::OsString;
 use std::process::ExitCode;
 
-use anyhow::{Context, Result, bail};
-use clap::{CommandFactory, FromArgMatches};
+use anyhow::{Result, bail};
 
 use crate::app::args::Args;
-use crate::app::headless::{Headless, Request, Still};
 use crate::lesson::Lesson;
 use crate::lesson::knobs::{self, Knobs};
-use crate::lesson::steps::{self, Show};
 
 /// Where `--check` writes the renders that differ from the book, and their difference images.
 pub const CHECK_OUTPUT: &str = "check";
@@ -31,11 +28,7 @@ pub fn main<L: Lesson>() -> ExitCode {
 
 /// Runs a lesson with these command-line arguments (the first is the program name).
 pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
-    let command = Args::command().name(L::NAME).about(L::TITLE);
-    let args = match command
-        .try_get_matches_from(args)
-        .and_then(|matches| Args::from_arg_matches(&matches))
-    {
+    let args = match Args::parse_for::<L>(args) {
         Ok(args) => args,
         Err(error) if !error.use_stderr() => {
             // --help and --version: not errors.
@@ -76,120 +69,7 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
     if !headless {
         return crate::app::window::run::<L>(&args, knobs, camera);
     }
-    if args.frames == Some(0) {
-        bail!("--frames must be at least 1");
-    }
-    if args.frames.is_some() && args.film.is_some() {
-        bail!("--film records one frame step by step; --frames counts whole frames");
-    }
-    let start = std::time::Instant::now();
-    let mut request = Request {
-        width: args.size.0,
-        height: args.size.1,
-        knobs,
-        camera,
-        scene: args.scene(),
-        read_stencil: false,
-        read_depth: false,
-        stop: args.step,
-        show: args.show::<L>(),
-        backend: args.backend.clone(),
-        verbose: args.verbose,
-    };
-    if args.list_steps {
-        // The steps depend on the knobs, not on the size: list them from a small frame.
-        (request.width, request.height) = (16, 16);
-        print!(
-            "{}",
-            steps::describe(&Headless::<L>::new(&request)?.steps())
-        );
-        return Ok(());
-    }
-    let headless = Headless::<L>::new(&request)?;
-    if args.verbose {
-        eprintln!("ready to render in {:.0?}", start.elapsed());
-    }
-    if let Some(path) = &args.screenshot {
-        let frames = args.frames.unwrap_or(1);
-        headless.render_frames(frames.saturating_sub(1))?;
-        save_png(&headless.capture()?.color, path)?;
-        if args.verbose {
-            eprintln!("wrote {} in {:.0?}", path.display(), start.elapsed());
-        }
-    }
-    if let Some(dir) = &args.film {
-        let stills = headless.film()?;
-        if args.verbose {
-            eprintln!(
-                "rendered {} steps in {} ms",
-                stills.len(),
-                start.elapsed().as_millis()
-            );
-        }
-        save_film(&stills, dir)?;
-        if args.verbose {
-            let count = stills.len() * Show::BUFFERS.len();
-            eprintln!(
-                "wrote {count} images into {} in {} ms",
-                dir.display(),
-                start.elapsed().as_millis()
-            );
-        }
-    }
-    Ok(())
-}
-
-/// Writes a film into `dir` (made if missing): `NN-<step>-{color,depth,stencil}.png` for every
-/// step, encoded on all cores.
-pub fn save_film(stills: &[Still], dir: &std::path::Path) -> Result<()> {
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot write the film into `{}`", dir.display()))?;
-    let files: Vec<_> = stills
-        .iter()
-        .enumerate()
-        .flat_map(|(index, still)| {
-            Show::BUFFERS.map(|show| {
-                let path = dir.join(steps::film_file(index + 1, still.step, show));
-                (still.image(show), path)
-            })
-        })
-        .collect();
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    std::thread::scope(|scope| {
-        let workers: Vec<_> = files
-            .chunks(files.len().div_ceil(threads).max(1))
-            .map(|chunk| {
-                scope.spawn(move || {
-                    chunk
-                        .iter()
-                        .try_for_each(|(image, path)| save_png(image, path))
-                })
-            })
-            .collect();
-        workers
-            .into_iter()
-            .try_for_each(|worker| worker.join().expect("a PNG encoder panicked"))
-    })
-}
-
-/// Writes a PNG, saying which file could not be written and why. The image goes to a temporary file
-/// beside `path` first and is renamed into place, so an interrupted run never leaves half a PNG
-/// where a good one was.
-pub fn save_png(image: &image::RgbaImage, path: &std::path::Path) -> Result<()> {
-    let name = path.file_name().unwrap_or_default().to_string_lossy();
-    let partial = path.with_file_name(format!(".{name}.partial"));
-    let written = (|| {
-        let file = std::fs::File::create(&partial)?;
-        let mut writer = std::io::BufWriter::new(file);
-        image.write_with_encoder(image::codecs::png::PngEncoder::new(&mut writer))?;
-        std::io::Write::flush(&mut writer)?;
-        std::fs::rename(&partial, path)?;
-        anyhow::Ok(())
-    })();
-    if written.is_err() {
-        let _ = std::fs::remove_file(&partial);
-    }
-    written.with_context(|| format!("cannot write screenshot `{}`", path.display()))
+    crate::app::headless::run::<L>(&args, knobs, camera)
 }
 
 /// Mesa's drivers print "error: XDG_RUNTIME_DIR is invalid or not set" to stderr when that variable is

@@ -93,9 +93,9 @@ pub fn check<L: Lesson>(
             .with_context(|| format!("cannot write into `{}`", out.display()))?;
         let actual = out.join(format!("{}-actual.png", shot.name));
         let difference = out.join(format!("{}-difference.png", shot.name));
-        crate::app::cli::save_png(&verdict.actual, &actual)?;
+        crate::app::headless::save_png(&verdict.actual, &actual)?;
         let difference_image = image::DynamicImage::ImageRgb8(verdict.comparison.difference);
-        crate::app::cli::save_png(&difference_image.to_rgba8(), &difference)?;
+        crate::app::headless::save_png(&difference_image.to_rgba8(), &difference)?;
         println!(
             "{}: DIFFERS from the book ({summary}); yours is {}, where it differs {}; the book's: {}",
             shot.name,

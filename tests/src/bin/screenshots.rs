@@ -42,7 +42,7 @@ fn write(wanted: &dyn Fn(&str, &str) -> bool) -> Result<()> {
     std::fs::create_dir_all(&images)?;
     let save = |image: &image::RgbaImage, name: &str| {
         let path = images.join(format!("{name}.png"));
-        workbook::app::cli::save_png(image, &path)?;
+        workbook::app::headless::save_png(image, &path)?;
         anyhow::Ok(path)
     };
     for shot in SHOTS.iter().filter(|s| wanted(s.name, s.lesson)) {

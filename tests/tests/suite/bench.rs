@@ -85,8 +85,18 @@ fn the_cost_page_shows_benchmark_output() {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
         // The window's panel: one row per lesson, beside the same adapter's main figures.
         if let Some(adapter) = stem.strip_suffix("-panel") {
-            assert_eq!(text.lines().next(), Some(PANEL_CSV_HEADER), "{}", path.display());
-            assert_eq!(text.lines().count(), LESSONS.len() + 1, "{}", path.display());
+            assert_eq!(
+                text.lines().next(),
+                Some(PANEL_CSV_HEADER),
+                "{}",
+                path.display()
+            );
+            assert_eq!(
+                text.lines().count(),
+                LESSONS.len() + 1,
+                "{}",
+                path.display()
+            );
             assert!(dir.join(format!("{adapter}.csv")).exists(), "{adapter}.csv");
             continue;
         }
@@ -121,8 +131,14 @@ fn the_panels_cost_is_measured() {
         defaults_only: true,
     };
     let measured = bench::measure_panel("stencil-basics", (640, 360), &plan).unwrap();
-    assert!(measured.without[0] > 0.0 && measured.with[0] > 0.0, "{measured:?}");
-    assert!(measured.recorded.0 > 0.0 && measured.recorded.1 > 0.0, "{measured:?}");
+    assert!(
+        measured.without[0] > 0.0 && measured.with[0] > 0.0,
+        "{measured:?}"
+    );
+    assert!(
+        measured.recorded.0 > 0.0 && measured.recorded.1 > 0.0,
+        "{measured:?}"
+    );
     let csv = bench::panel_csv(&[measured]);
     let mut lines = csv.lines();
     assert_eq!(lines.next(), Some(PANEL_CSV_HEADER));

@@ -157,16 +157,13 @@ fn the_panel_asks_for_steps_and_hiding() {
 /// (and the panel says "CPU time only", as the test above shows).
 #[test]
 fn the_panels_step_times_are_positive_and_fit_in_the_frame() {
-    use clap::{CommandFactory, FromArgMatches};
+    use reflect_skull::ReflectSkull;
     use workbook::app::args::Args;
     use workbook::app::workbench::headless::HeadlessWorkbench;
     use workbook::wgpu;
 
-    let matches = Args::command()
-        .try_get_matches_from(["reflect-skull", "--size", "640x360"])
-        .unwrap();
-    let args = Args::from_arg_matches(&matches).unwrap();
-    let mut bench = HeadlessWorkbench::<reflect_skull::ReflectSkull>::new(&args).unwrap();
+    let args = Args::parse_for::<ReflectSkull>(["reflect-skull", "--size", "640x360"]).unwrap();
+    let mut bench = HeadlessWorkbench::<ReflectSkull>::new(&args).unwrap();
     // Until the panel has a frame time (three frames within a second and a half) and the times of
     // a frame the GPU finished.
     for _ in 0..40 {

@@ -523,8 +523,11 @@ impl<L: Lesson> Workbench<L> {
             arguments.extend(["--backend".to_string(), backend.clone()]);
         }
         let command = format!("cargo run -p {} -- {}", L::NAME, arguments.join(" "));
+        // The very arguments printed, parsed as the lesson's command line parses them.
         let program = std::iter::once(L::NAME.to_string());
-        crate::app::cli::run::<L>(program.chain(arguments).map(Into::into))?;
+        let args = Args::parse_for::<L>(program.chain(arguments))?;
+        let knobs = Knobs::from_settings(L::KNOBS, &args.settings)?;
+        crate::app::headless::run::<L>(&args, knobs, args.camera::<L>()?)?;
         println!("wrote {}: {command}", path.display());
         self.message = Some(format!("wrote {}:\n{command}", path.display()));
         Ok(())
