@@ -203,3 +203,27 @@ fn a_window_shows_thirty_frames_and_closes() {
     );
     outcome.assert_clean_success();
 }
+
+/// `--anisotropy 1` filters the textures plainly trilinearly (the software GPU's cheaper picture):
+/// the textured floor and wall change, the sky does not; a value the GPU has no mode for is refused
+/// in one line.
+#[test]
+fn anisotropy_changes_the_textures_and_nothing_else() {
+    run(exe(), &["--anisotropy", "3", "--screenshot", "x.png"])
+        .assert_one_line_error("1, 2, 4, 8 or 16");
+    let picture = |name: &str, anisotropy: &str| {
+        let shot = scratch(name);
+        let args = ["--size", "320x180", "--anisotropy", anisotropy, "--screenshot"];
+        run(exe(), &[&args[..], &[shot.to_str().unwrap()]].concat()).assert_clean_success();
+        image::open(&shot).unwrap().to_rgb8()
+    };
+    let (sharp, plain) = (picture("anisotropy-8.png", "8"), picture("anisotropy-1.png", "1"));
+    let differs = |x: u32, y: u32| sharp.get_pixel(x, y) != plain.get_pixel(x, y);
+    // The sky left of the wall is no texture.
+    let sky = (0..55).flat_map(|x| (0..60).map(move |y| (x, y)));
+    assert_eq!(sky.filter(|&(x, y)| differs(x, y)).count(), 0);
+    // The floor seen at a grazing angle is where the filtering shows.
+    let all = (0..320).flat_map(|x| (0..180).map(move |y| (x, y)));
+    let changed = all.filter(|&(x, y)| differs(x, y)).count();
+    assert!(changed > 320 * 180 / 100, "only {changed} pixels changed");
+}

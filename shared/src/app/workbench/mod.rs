@@ -518,6 +518,7 @@ impl<L: Lesson> Workbench<L> {
         let (width, height) = self.buffers.size;
         let mut arguments = vec!["--size".to_string(), format!("{width}x{height}")];
         arguments.extend(setting(runner, viewing).arguments::<L>());
+        arguments.extend(Args::scene_arguments(&self.scene));
         arguments.extend(["--screenshot".to_string(), path.display().to_string()]);
         if let Some(backend) = &self.backend {
             arguments.extend(["--backend".to_string(), backend.clone()]);
