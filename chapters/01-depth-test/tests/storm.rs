@@ -1,7 +1,8 @@
 //! The `depth-test` window under use: a storm of resizes (down to 1×1), hides and shows, knob, step
 //! and buffer keys, after which it still shows the picture a headless render gives; and surface
 //! answers a real surface seldom gives (`Lost`, `Outdated`, `Timeout`, `Suboptimal`), injected with
-//! the runner's test hook, all recovered from.
+//! the runner's test hook, all recovered from; and the workbench's panel, laid beside the picture
+//! and hidden with `H`, after which the window is the headless render again.
 //!
 //! Needs a display (CI runs the suite under `xvfb-run`), `xdotool` and ImageMagick's `import`:
 //! without them the tests are skipped with a message, except under CI, where they fail.
@@ -111,11 +112,20 @@ struct Running {
 }
 
 impl Running {
+    /// The lesson alone, without the workbench's panel: the window must then show exactly what
+    /// the headless runner renders (the panel has its own tests in the suite).
     fn start(display: &str, args: &[&str], env: &[(&str, &str)]) -> Running {
+        let args: Vec<&str> = ["--no-panel"]
+            .into_iter()
+            .chain(args.iter().copied())
+            .collect();
+        Running::start_with_panel(display, &args, env)
+    }
+
+    /// The lesson in its workbench, the panel shown unless `args` say `--no-panel`.
+    fn start_with_panel(display: &str, args: &[&str], env: &[(&str, &str)]) -> Running {
         let mut command = Command::new(EXE);
-        // The lesson alone, without the workbench's panel: the window must then show exactly what
-        // the headless runner renders (the panel has its own tests in the suite).
-        command.arg("--no-panel").args(args).env("DISPLAY", display);
+        command.args(args).env("DISPLAY", display);
         for name in ["WAYLAND_DISPLAY", "RUST_BACKTRACE", "RUST_LOG"] {
             command.env_remove(name);
         }
@@ -234,8 +244,14 @@ fn capture(window: &str) -> RgbImage {
 
 /// The headless render at the windows' size, 320×240, with default settings.
 fn headless(name: &str) -> RgbImage {
+    headless_sized(name, 320, 240)
+}
+
+/// The headless render of `width`×`height` pixels, with default settings.
+fn headless_sized(name: &str, width: u32, height: u32) -> RgbImage {
     let shot = scratch(name);
-    let args = ["--size", "320x240", "--screenshot", shot.to_str().unwrap()];
+    let size = format!("{width}x{height}");
+    let args = ["--size", &size, "--screenshot", shot.to_str().unwrap()];
     run(Path::new(EXE), &args).assert_clean_success();
     image::open(&shot).unwrap().to_rgb8()
 }
@@ -255,9 +271,22 @@ fn differing_share(a: &RgbImage, b: &RgbImage) -> f64 {
 /// Waits until the window shows `expected` (a frame may still be on its way), or fails saying how
 /// far off it is and saving both pictures; returns the share of pixels off.
 fn assert_shows(window: &str, expected: &RgbImage, name: &str) -> f64 {
+    wait_until_shown(window, expected, name, false)
+}
+
+/// [`assert_shows`] for the window's left part, as wide as `expected`: the view beside the panel.
+fn assert_shows_at_left(window: &str, expected: &RgbImage, name: &str) -> f64 {
+    wait_until_shown(window, expected, name, true)
+}
+
+fn wait_until_shown(window: &str, expected: &RgbImage, name: &str, at_left: bool) -> f64 {
     let start = Instant::now();
     loop {
-        let shown = capture(window);
+        let mut shown = capture(window);
+        if at_left && shown.height() == expected.height() && shown.width() > expected.width() {
+            shown = image::imageops::crop_imm(&shown, 0, 0, expected.width(), expected.height())
+                .to_image();
+        }
         let share = if shown.dimensions() == expected.dimensions() {
             differing_share(&shown, expected)
         } else {
@@ -547,4 +576,34 @@ fn after_injected_surface_errors_an_idle_window_still_shows_the_picture() {
     assert_eq!(code, Some(0), "exit code; stderr:\n{stderr}");
     assert!(stderr.trim().is_empty(), "stderr:\n{stderr}");
     assert_eq!(stdout.lines().count(), 4, "stdout:\n{stdout}");
+}
+
+/// The panel is laid out beside the lesson's picture, never over it: with the panel, the window's
+/// left part is the headless render of the view's size (the window less the panel's width); `H`
+/// hides the panel and the whole window is the headless render of its size; shown and hidden again
+/// (the view's buffers resized both ways), it still is.
+#[test]
+fn the_panel_sits_beside_the_picture_and_h_hides_it() {
+    let Some(display) = display() else { return };
+    let (width, height) = (800, 450);
+    // At the X server's scale of 1, a point of egui is a pixel.
+    let view_width = width - workbook::app::workbench::panel::WIDTH as u32;
+    let beside = headless_sized("panel-beside.png", view_width, height);
+    let whole = headless_sized("panel-hidden.png", width, height);
+    let size = format!("{width}x{height}");
+    let mut lesson = Running::start_with_panel(&display.name, &["--size", &size], &[]);
+    let window = lesson.window();
+    assert_shows_at_left(&window, &beside, "panel-shown");
+    let press_h = ["windowfocus", "--sync", &window, "key", "h"];
+    lesson.xdotool(&press_h);
+    assert_shows(&window, &whole, "panel-hidden");
+    lesson.xdotool(&press_h);
+    assert_shows_at_left(&window, &beside, "panel-shown-again");
+    lesson.xdotool(&press_h);
+    assert_shows(&window, &whole, "panel-hidden-again");
+    lesson.assert_alive("after hiding and showing its panel");
+    lesson.xdotool(&["windowfocus", "--sync", &window, "key", "Escape"]);
+    let (code, _, stderr) = lesson.wait(Duration::from_secs(20));
+    assert_eq!(code, Some(0), "exit code; stderr:\n{stderr}");
+    assert!(stderr.trim().is_empty(), "stderr:\n{stderr}");
 }

@@ -94,10 +94,18 @@ pub fn show(ui: &mut Ui, model: &Model<'_>) -> Vec<Action> {
         .show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| {
                 ui.heading(model.title);
+                // First, where a window of 720 pixels shows it without scrolling.
                 ui.horizontal(|ui| {
                     ui.label("H hides this panel.");
                     if ui.small_button("Hide").clicked() {
                         actions.push(Action::Hide);
+                    }
+                    if ui
+                        .small_button("Screenshot")
+                        .on_hover_text("write the PNG --screenshot would, and print the command")
+                        .clicked()
+                    {
+                        actions.push(Action::Screenshot);
                     }
                 });
                 knobs(ui, model, &mut actions);
@@ -282,14 +290,6 @@ fn camera(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
             }
         }
     });
-    ui.add_space(4.0);
-    if ui
-        .button("Screenshot")
-        .on_hover_text("write the PNG --screenshot would, and print the command")
-        .clicked()
-    {
-        actions.push(Action::Screenshot);
-    }
 }
 
 /// Whether the view is one of the book's pictures, and how close.
