@@ -6,7 +6,7 @@ use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
 use crate::app::args::Args;
-use crate::app::runner::Runner;
+use crate::app::runner::{Passes, Runner};
 use crate::gpu::timing::StepTimer;
 use crate::gpu::views::DEPTH_COPY_FORMAT;
 use crate::gpu::{Gpu, HEADLESS_FORMAT, Offscreen};
@@ -34,6 +34,9 @@ pub struct Request {
     pub show: Show,
     pub backend: Option<String>,
     pub verbose: bool,
+    /// How the frame records its steps when nothing looks between them: in one render pass (the
+    /// default), or in a pass each, as the film and the timers do.
+    pub passes: Passes,
 }
 
 impl Request {
@@ -51,6 +54,7 @@ impl Request {
             show: L::SHOWS,
             backend: None,
             verbose: false,
+            passes: Passes::default(),
         })
     }
 }
@@ -89,6 +93,8 @@ pub struct FrameTiming {
     pub gpu_ms: Option<Vec<f64>>,
     /// CPU time to record the frame's commands and submit them.
     pub record_and_submit: std::time::Duration,
+    /// Of which the submission (the driver's share, mostly).
+    pub submit: std::time::Duration,
     /// From the start of recording until the GPU has finished the frame.
     pub frame: std::time::Duration,
 }
@@ -148,7 +154,7 @@ impl<L: Lesson> Headless<L> {
         }
         let size = (request.width, request.height);
         gpu.clone().scoped(|| {
-            let runner = Runner::<L>::new(
+            let mut runner = Runner::<L>::new(
                 gpu,
                 HEADLESS_FORMAT,
                 &request.scene,
@@ -156,6 +162,7 @@ impl<L: Lesson> Headless<L> {
                 request.camera,
                 size,
             )?;
+            runner.passes = request.passes;
             let device = &runner.gpu.device;
             let picture = |label| target(device, label, HEADLESS_FORMAT, size);
             Ok(Self {
@@ -230,7 +237,9 @@ impl<L: Lesson> Headless<L> {
                 Some(timer) => runner.record_timed(&color_view, timer),
                 None => runner.record(&color_view, Stop::Last, Show::Color, &color_view)?,
             };
-            runner.gpu.queue.submit([encoder.finish()]);
+            let commands = encoder.finish();
+            let recorded = start.elapsed();
+            runner.gpu.queue.submit([commands]);
             let record_and_submit = start.elapsed();
             let gpu_ms = timer.map(|t| t.read(device, steps.len())).transpose()?;
             device
@@ -240,6 +249,7 @@ impl<L: Lesson> Headless<L> {
                 steps,
                 gpu_ms,
                 record_and_submit,
+                submit: record_and_submit - recorded,
                 frame: start.elapsed(),
             })
         })
@@ -505,6 +515,7 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
         show: args.show::<L>(),
         backend: args.backend.clone(),
         verbose: args.verbose,
+        passes: Passes::default(),
     };
     if args.list_steps {
         // The steps depend on the knobs, not on the size: list them from a small frame.

@@ -22,6 +22,8 @@ pub struct Runner<L: Lesson> {
     pub camera: Camera,
     pub depth_stencil: DepthStencil,
     depth_bind_group: Option<wgpu::BindGroup>,
+    /// How frames that nothing looks into between their steps are recorded (tests compare both).
+    pub passes: Passes,
 }
 
 impl<L: Lesson> Runner<L> {
@@ -46,6 +48,7 @@ impl<L: Lesson> Runner<L> {
             camera,
             depth_stencil,
             depth_bind_group,
+            passes: Passes::default(),
         })
     }
 
@@ -67,7 +70,7 @@ impl<L: Lesson> Runner<L> {
     /// The names of the frame's steps with the current knobs, in order (nothing is recorded).
     pub fn steps(&self) -> Vec<&'static str> {
         // A frame that stops before its first step records nothing: any view will do as its colour.
-        self.frame(&self.depth_stencil.stencil_values, 0, None)
+        self.frame(&self.depth_stencil.stencil_values, 0, None, Passes::PerStep)
             .steps
     }
 
@@ -96,8 +99,8 @@ impl<L: Lesson> Runner<L> {
                     }
                 }
             };
-        let frame = self.frame(color, stop.count(), Some(&mut present));
-        let (mut encoder, steps) = (frame.encoder, frame.steps);
+        let frame = self.frame(color, stop.count(), Some(&mut present), self.passes);
+        let (mut encoder, steps) = frame.finish();
         if let Some(error) = failure {
             return Err(error);
         }
@@ -176,8 +179,12 @@ impl<L: Lesson> Runner<L> {
             Some(&mut present),
         );
         frame.timer = timer;
+        // Without timestamps nothing needs a pass per step.
+        if self.passes == Passes::One {
+            frame = frame.one_pass();
+        }
         self.lesson.render(&mut frame);
-        let (mut encoder, steps) = (frame.encoder, frame.steps);
+        let (mut encoder, steps) = frame.finish();
         if let Some(error) = failure {
             return Err(error);
         }
@@ -213,7 +220,7 @@ impl<L: Lesson> Runner<L> {
         );
         frame.timer = Some(timer);
         self.lesson.render(&mut frame);
-        let (mut encoder, steps) = (frame.encoder, frame.steps);
+        let (mut encoder, steps) = frame.finish();
         timer.resolve(&mut encoder, steps.len());
         (encoder, steps)
     }
@@ -226,8 +233,8 @@ impl<L: Lesson> Runner<L> {
         after_step: AfterStep<'_>,
     ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
         self.update();
-        let frame = self.frame(color, usize::MAX, Some(after_step));
-        (frame.encoder, frame.steps)
+        let frame = self.frame(color, usize::MAX, Some(after_step), Passes::PerStep);
+        frame.finish()
     }
 
     /// Writes this frame's camera and lights.
@@ -246,11 +253,15 @@ impl<L: Lesson> Runner<L> {
         color: &'f wgpu::TextureView,
         stop: usize,
         after_step: Option<AfterStep<'f>>,
+        pass: Passes,
     ) -> Frame<'f> {
         let targets = (color, &self.depth_stencil);
         let scene = &self.scene;
         let cameras = (self.camera, self.view());
         let mut frame = Frame::new(&self.gpu, scene, cameras, targets, stop, after_step);
+        if pass == Passes::One {
+            frame = frame.one_pass();
+        }
         self.lesson.render(&mut frame);
         frame
     }
@@ -352,4 +363,14 @@ impl<L: Lesson> Runner<L> {
 fn depth_bind_group(gpu: &Gpu, scene: &Scene, target: &DepthStencil) -> Option<wgpu::BindGroup> {
     let pipelines = scene.depth_view.as_ref()?;
     Some(pipelines.bind_group(&gpu.device, target))
+}
+
+/// How a frame's steps are recorded: a render pass each (to look between them: timestamps, the
+/// film), or one pass for all the steps on the frame's targets (see `Frame::one_pass`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Passes {
+    PerStep,
+    /// Where nothing looks between the steps (the default).
+    #[default]
+    One,
 }

@@ -50,6 +50,7 @@ pub fn compare<L: Lesson>(
         show: setting.show,
         backend: backend.map(str::to_string),
         verbose: false,
+        passes: Default::default(),
     };
     let actual = Headless::<L>::new(&request)?.capture()?.color;
     Ok(Verdict {

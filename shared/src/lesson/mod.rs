@@ -6,7 +6,10 @@
 //!
 //! A frame is a list of named **steps** ([`Frame::step`]), each one render pass. The names are data:
 //! `--list-steps`, `--step N`, `--film`, the window's `[` and `]`, the book's step strips and the tests
-//! all read them from the lesson's `render`, and nowhere else.
+//! all read them from the lesson's `render`, and nowhere else. Where nobody looks between the steps
+//! (a screenshot, the window without its panel), the frame records them into one render pass
+//! instead, as an engine would ([`Frame::one_pass`]): the same picture, for a fraction of the CPU's
+//! time per pass.
 //!
 //! Beside the trait: the knobs ([`knobs`]), where a frame stops and what it shows ([`steps`]), and the
 //! steps every mirror lesson begins with ([`mirror`]).
@@ -56,6 +59,8 @@ pub struct Frame<'a> {
     pub camera: Camera,
     /// What the camera sees through: eye, view and projection (for views of a lesson's own).
     pub view: View,
+    /// The frame's one pass while it is open (declared before the encoder: it ends first).
+    open: Option<wgpu::RenderPass<'static>>,
     pub(crate) encoder: wgpu::CommandEncoder,
     color: &'a wgpu::TextureView,
     depth_stencil: &'a DepthStencil,
@@ -68,6 +73,8 @@ pub struct Frame<'a> {
     after_step: Option<AfterStep<'a>>,
     /// Where each step's pass writes its timestamps, when the frame is timed.
     pub(crate) timer: Option<&'a StepTimer>,
+    /// Record the steps on the frame's own targets into one render pass (see [`Frame::one_pass`]).
+    one_pass: bool,
 }
 
 /// What the frame calls after each step it records: with the encoder, the step's index (from 0) and
@@ -102,7 +109,26 @@ impl<'a> Frame<'a> {
             stop,
             after_step,
             timer: None,
+            one_pass: false,
+            open: None,
         }
+    }
+
+    /// Records the steps drawn on the frame's own targets into one render pass, each step a debug
+    /// group in it, rather than a pass each: for frames whose steps nobody looks at in between (no
+    /// timestamps per step, no film). A step into a lesson's own target still has a pass of its
+    /// own. Each step starts from the state a new pass starts from (stencil reference 0, blend
+    /// constant 0, the whole target as viewport and scissor), so the picture is the same; a test
+    /// checks that it is, for every lesson.
+    pub(crate) fn one_pass(mut self) -> Self {
+        self.one_pass = self.timer.is_none();
+        self
+    }
+
+    /// The frame recorded: its encoder (the open pass ended) and the names of its steps.
+    pub(crate) fn finish(mut self) -> (wgpu::CommandEncoder, Vec<&'static str>) {
+        self.open = None;
+        (self.encoder, self.steps)
     }
 
     /// The size of the frame's targets, in pixels.
@@ -147,6 +173,11 @@ impl<'a> Frame<'a> {
         if self.steps.len() > self.stop {
             return;
         }
+        if self.one_pass && target.is_none() {
+            return self.record_in_one_pass(name, start, draw);
+        }
+        // A pass of its own: the frame's one pass, if open, ends first.
+        self.open = None;
         let (color, depth_stencil) = match target {
             Some(target) => (&target.color_view, &target.depth_stencil),
             None => (self.color, self.depth_stencil),
@@ -167,6 +198,33 @@ impl<'a> Frame<'a> {
         if let Some(after_step) = &mut self.after_step {
             after_step(&mut self.encoder, self.steps.len() - 1, target);
         }
+    }
+
+    /// A step in the frame's one pass, opened by the first step (or again after a step into a
+    /// target of the lesson's own).
+    fn record_in_one_pass(
+        &mut self,
+        name: &'static str,
+        start: Start,
+        draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
+    ) {
+        if start == Start::Cleared {
+            self.open = None;
+        }
+        let targets = (self.color, self.depth_stencil);
+        let pass = self.open.get_or_insert_with(|| {
+            // The pass holds the encoder until it ends: `finish` and every pass of its own end it.
+            pass(&mut self.encoder, "one pass", start, targets, None).forget_lifetime()
+        });
+        let (width, height) = self.depth_stencil.size();
+        pass.push_debug_group(name);
+        pass.set_stencil_reference(0);
+        pass.set_blend_constant(wgpu::Color::TRANSPARENT);
+        pass.set_viewport(0.0, 0.0, width as f32, height as f32, 0.0, 1.0);
+        pass.set_scissor_rect(0, 0, width, height);
+        self.scene.bind_frame(pass);
+        draw(pass);
+        pass.pop_debug_group();
     }
 }
 

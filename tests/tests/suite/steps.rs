@@ -4,6 +4,7 @@
 
 use image::Rgba;
 use workbook::Show;
+use workbook::app::runner::Passes;
 use workbook::gpu::views::stencil_colour;
 use workbook::room::scene::CLEAR_SRGB;
 use workbook_tests::shots::{self, LESSONS, PAIRS, STRICT};
@@ -57,6 +58,39 @@ fn every_frame_goes_from_cleared_buffers_to_the_full_picture_with_no_empty_step(
             assert!(changed, "{lesson}: step `{}` changes nothing", pair[1].step);
         }
     }
+}
+
+/// Where nothing looks between the steps (a screenshot, the window without its panel) a frame
+/// records them into one render pass, each step starting from the state a new pass starts from. The
+/// colours, the depth and the stencil must be exactly those of the frame recorded a pass per step
+/// (as the film, the timers and the panel record it), for every value of every knob.
+#[test]
+fn one_pass_gives_the_buffers_a_pass_per_step_gives() {
+    let size = (96, 54);
+    let mut compared = 0;
+    for lesson in LESSONS {
+        let each = shots::every_knob_value(lesson).unwrap();
+        for show in Show::BUFFERS {
+            let captures = |passes: Passes| {
+                shots::render_each(lesson, &each, |request| {
+                    (request.width, request.height) = size;
+                    request.show = show;
+                    request.passes = passes;
+                })
+                .unwrap_or_else(|e| panic!("{lesson}: {e:#}"))
+            };
+            let (one, per_step) = (captures(Passes::One), captures(Passes::PerStep));
+            for ((one, per_step), settings) in one.iter().zip(&per_step).zip(&each) {
+                assert!(
+                    one.color == per_step.color,
+                    "{lesson} {settings:?}: the {} buffer differs in one pass",
+                    show.name()
+                );
+                compared += 1;
+            }
+        }
+    }
+    eprintln!("{compared} pictures the same in one pass and a pass per step");
 }
 
 /// The strips on the lesson pages are the lessons' films now: every image matches by FLIP, no image
