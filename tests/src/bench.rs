@@ -8,101 +8,78 @@ use std::fmt::Write as _;
 use anyhow::{Context, Result};
 use workbook::Lesson;
 use workbook::app::headless::{Headless, Request};
+use workbook::room::scene::DEFAULT_ANISOTROPY;
 
 use crate::shots::{ForLesson, for_lesson};
 
-/// One thing to measure: a lesson with knob settings.
+/// One thing to measure: a lesson with knob settings, its textures filtered with `anisotropy`.
 pub struct Case {
     pub lesson: &'static str,
     pub settings: &'static [&'static str],
+    pub anisotropy: u16,
 }
 
-/// The lessons with their default knobs, and the knob values that change the work.
+/// A lesson with knob settings and the default filtering.
+pub const fn case(lesson: &'static str, settings: &'static [&'static str]) -> Case {
+    Case {
+        lesson,
+        settings,
+        anisotropy: DEFAULT_ANISOTROPY,
+    }
+}
+
+impl Case {
+    /// The knobs as `--set` takes them, and `--anisotropy` where it is not the default.
+    pub fn label(&self) -> String {
+        let mut parts: Vec<String> = self.settings.iter().map(|s| s.to_string()).collect();
+        if self.anisotropy != DEFAULT_ANISOTROPY {
+            parts.push(format!("--anisotropy {}", self.anisotropy));
+        }
+        parts.join(" ")
+    }
+}
+
+/// The lessons with their default knobs, and the knob values that change the work; lesson 1 and
+/// the whole mirror scene (lesson 7) also with cheaper texture filtering, which is most of a
+/// software GPU's time.
 pub const CASES: &[Case] = &[
+    case("depth-test", &[]),
     Case {
-        lesson: "depth-test",
-        settings: &[],
+        anisotropy: 1,
+        ..case("depth-test", &[])
     },
     Case {
-        lesson: "stencil-basics",
-        settings: &[],
+        anisotropy: 2,
+        ..case("depth-test", &[])
     },
     Case {
-        lesson: "mark-mirror",
-        settings: &[],
+        anisotropy: 4,
+        ..case("depth-test", &[])
     },
+    case("stencil-basics", &[]),
+    case("mark-mirror", &[]),
+    case("reflect-skull", &[]),
+    case("winding-fix", &[]),
+    case("transparent-mirror", &[]),
+    case("drawing-order", &[]),
     Case {
-        lesson: "reflect-skull",
-        settings: &[],
+        anisotropy: 1,
+        ..case("drawing-order", &[])
     },
-    Case {
-        lesson: "winding-fix",
-        settings: &[],
-    },
-    Case {
-        lesson: "transparent-mirror",
-        settings: &[],
-    },
-    Case {
-        lesson: "drawing-order",
-        settings: &[],
-    },
-    Case {
-        lesson: "floor-mirror",
-        settings: &[],
-    },
-    Case {
-        lesson: "render-to-texture",
-        settings: &[],
-    },
-    Case {
-        lesson: "render-to-texture",
-        settings: &["resolution=half"],
-    },
-    Case {
-        lesson: "render-to-texture",
-        settings: &["resolution=quarter"],
-    },
-    Case {
-        lesson: "render-to-texture",
-        settings: &["technique=stencil"],
-    },
-    Case {
-        lesson: "planar-shadow",
-        settings: &[],
-    },
-    Case {
-        lesson: "planar-shadow",
-        settings: &["reflect-shadow=off"],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &["depth=0"],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &["depth=1"],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &["depth=2"],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &[],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &["depth=4"],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &["depth=5"],
-    },
-    Case {
-        lesson: "two-mirrors",
-        settings: &["depth=6"],
-    },
+    case("floor-mirror", &[]),
+    case("render-to-texture", &[]),
+    case("render-to-texture", &["resolution=half"]),
+    case("render-to-texture", &["resolution=quarter"]),
+    case("render-to-texture", &["technique=stencil"]),
+    case("planar-shadow", &[]),
+    case("planar-shadow", &["reflect-shadow=off"]),
+    case("two-mirrors", &["depth=0"]),
+    case("two-mirrors", &["depth=1"]),
+    case("two-mirrors", &["depth=2"]),
+    case("two-mirrors", &[]),
+    case("two-mirrors", &["depth=4"]),
+    case("two-mirrors", &["depth=5"]),
+    case("two-mirrors", &["depth=6"]),
 ];
 
 /// How to measure.
@@ -127,7 +104,16 @@ pub struct Measured {
     /// Whole-frame GPU time (the steps summed), CPU record+submit in µs, frame wall time in ms.
     pub gpu_ms: Option<[f64; 3]>,
     pub cpu_us: [f64; 3],
+    /// Of the CPU time, the submission's (the driver's share, mostly), µs.
+    pub submit_us: [f64; 3],
     pub frame_ms: [f64; 3],
+    /// GPU memory the lesson's device holds after its frames (its allocator's report: textures,
+    /// buffers, targets), MiB; `None` where the backend gives no report (GL).
+    pub gpu_memory_mib: Option<f64>,
+    /// The CPU's record+submit time in µs and the frame's wall time in ms with the frame's steps
+    /// in one render pass (as a screenshot records it), no timestamps.
+    pub one_pass_cpu_us: [f64; 3],
+    pub one_pass_frame_ms: [f64; 3],
 }
 
 impl Measured {
@@ -145,6 +131,7 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
             let Run(case, size, plan) = self;
             let mut request = Request::new::<L>(case.settings)?;
             (request.width, request.height) = size;
+            request.scene.anisotropy = case.anisotropy;
             let headless = Headless::<L>::new(&request)?;
             let timer = headless.timer();
             let mut frames = Vec::with_capacity(plan.frames);
@@ -154,7 +141,20 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
                     frames.push(frame);
                 }
             }
+            // The same frames recorded as a screenshot or the window without its panel records
+            // them: every step in one render pass, no timestamps.
+            let mut one_pass = Vec::with_capacity(plan.frames);
+            for index in 0..plan.warm_up + plan.frames {
+                let frame = headless.timed_frame(None)?;
+                if index >= plan.warm_up {
+                    one_pass.push(frame);
+                }
+            }
             let steps = frames[0].steps.clone();
+            let gpu_memory_mib = headless
+                .device()
+                .generate_allocator_report()
+                .map(|report| report.total_allocated_bytes as f64 / (1024.0 * 1024.0));
             let gpu = |pick: &dyn Fn(&[f64]) -> f64| -> Option<Vec<f64>> {
                 frames
                     .iter()
@@ -171,7 +171,7 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
             let info = headless.device_info();
             Ok(Measured {
                 lesson: case.lesson,
-                settings: case.settings.join(" "),
+                settings: case.label(),
                 size,
                 adapter: info,
                 steps: step_times,
@@ -182,8 +182,27 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
                         .map(|f| f.record_and_submit.as_secs_f64() * 1e6)
                         .collect::<Vec<_>>(),
                 ),
+                submit_us: spread(
+                    &frames
+                        .iter()
+                        .map(|f| f.submit.as_secs_f64() * 1e6)
+                        .collect::<Vec<_>>(),
+                ),
                 frame_ms: spread(
                     &frames
+                        .iter()
+                        .map(|f| f.frame.as_secs_f64() * 1e3)
+                        .collect::<Vec<_>>(),
+                ),
+                gpu_memory_mib,
+                one_pass_cpu_us: spread(
+                    &one_pass
+                        .iter()
+                        .map(|f| f.record_and_submit.as_secs_f64() * 1e6)
+                        .collect::<Vec<_>>(),
+                ),
+                one_pass_frame_ms: spread(
+                    &one_pass
                         .iter()
                         .map(|f| f.frame.as_secs_f64() * 1e3)
                         .collect::<Vec<_>>(),
@@ -192,7 +211,7 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
         }
     }
     for_lesson(case.lesson, Run(case, size, plan))?
-        .with_context(|| format!("{} {}", case.lesson, case.settings.join(" ")))
+        .with_context(|| format!("{} {}", case.lesson, case.label()))
 }
 
 /// The window's panel, measured: a lesson's window frame drawn by the workbench into a texture
@@ -377,14 +396,14 @@ pub fn spread(values: &[f64]) -> [f64; 3] {
 }
 
 /// The CSV's header: one row per case, size and step (the step `frame` is the whole frame).
-pub const CSV_HEADER: &str = "adapter,lesson,settings,width,height,step,gpu_ms_median,gpu_ms_p10,gpu_ms_p90,cpu_us_median,frame_ms_median,fps";
+pub const CSV_HEADER: &str = "adapter,lesson,settings,width,height,step,gpu_ms_median,gpu_ms_p10,gpu_ms_p90,cpu_us_median,submit_us_median,frame_ms_median,fps,gpu_memory_mib,one_pass_cpu_us_median,one_pass_frame_ms_median";
 
 pub fn csv(results: &[Measured]) -> String {
     let mut out = format!("{CSV_HEADER}\n");
     for m in results {
         let row = |step: &str, gpu: [f64; 3]| {
             format!(
-                "\"{}\",{},\"{}\",{},{},\"{step}\",{:.4},{:.4},{:.4},{:.1},{:.3},{:.1}\n",
+                "\"{}\",{},\"{}\",{},{},\"{step}\",{:.4},{:.4},{:.4},{:.1},{:.1},{:.3},{:.1},{:.1},{:.1},{:.3}\n",
                 m.adapter,
                 m.lesson,
                 m.settings,
@@ -394,8 +413,12 @@ pub fn csv(results: &[Measured]) -> String {
                 gpu[1],
                 gpu[2],
                 m.cpu_us[0],
+                m.submit_us[0],
                 m.frame_ms[0],
-                m.fps()
+                m.fps(),
+                m.gpu_memory_mib.unwrap_or(f64::NAN),
+                m.one_pass_cpu_us[0],
+                m.one_pass_frame_ms[0]
             )
         };
         for (step, gpu) in &m.steps {
@@ -411,8 +434,18 @@ pub fn table(results: &[Measured]) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{:<20} {:<22} {:>9} {:>10} {:>10} {:>10} {:>8}",
-        "lesson", "knobs", "size", "GPU ms", "CPU µs", "frame ms", "frames/s"
+        "{:<20} {:<22} {:>9} {:>8} {:>8} {:>9} {:>9} {:>8} {:>8} {:>10} {:>10}",
+        "lesson",
+        "knobs",
+        "size",
+        "GPU ms",
+        "CPU µs",
+        "submit µs",
+        "frame ms",
+        "frames/s",
+        "GPU MiB",
+        "1-pass µs",
+        "1-pass ms"
     );
     for m in results {
         let gpu = m
@@ -420,7 +453,7 @@ pub fn table(results: &[Measured]) -> String {
             .map_or("n/a".to_string(), |g| format!("{:.3}", g[0]));
         let _ = writeln!(
             out,
-            "{:<20} {:<22} {:>9} {:>10} {:>10.0} {:>10.2} {:>8.1}",
+            "{:<20} {:<22} {:>9} {:>8} {:>8.0} {:>9.0} {:>9.2} {:>8.1} {:>8} {:>10.0} {:>10.2}",
             m.lesson,
             if m.settings.is_empty() {
                 "(defaults)"
@@ -430,8 +463,13 @@ pub fn table(results: &[Measured]) -> String {
             format!("{}x{}", m.size.0, m.size.1),
             gpu,
             m.cpu_us[0],
+            m.submit_us[0],
             m.frame_ms[0],
-            m.fps()
+            m.fps(),
+            m.gpu_memory_mib
+                .map_or("n/a".to_string(), |mib| format!("{mib:.1}")),
+            m.one_pass_cpu_us[0],
+            m.one_pass_frame_ms[0]
         );
     }
     out

@@ -213,11 +213,20 @@ fn anisotropy_changes_the_textures_and_nothing_else() {
         .assert_one_line_error("1, 2, 4, 8 or 16");
     let picture = |name: &str, anisotropy: &str| {
         let shot = scratch(name);
-        let args = ["--size", "320x180", "--anisotropy", anisotropy, "--screenshot"];
+        let args = [
+            "--size",
+            "320x180",
+            "--anisotropy",
+            anisotropy,
+            "--screenshot",
+        ];
         run(exe(), &[&args[..], &[shot.to_str().unwrap()]].concat()).assert_clean_success();
         image::open(&shot).unwrap().to_rgb8()
     };
-    let (sharp, plain) = (picture("anisotropy-8.png", "8"), picture("anisotropy-1.png", "1"));
+    let (sharp, plain) = (
+        picture("anisotropy-8.png", "8"),
+        picture("anisotropy-1.png", "1"),
+    );
     let differs = |x: u32, y: u32| sharp.get_pixel(x, y) != plain.get_pixel(x, y);
     // The sky left of the wall is no texture.
     let sky = (0..55).flat_map(|x| (0..60).map(move |y| (x, y)));

@@ -61,7 +61,7 @@ pub struct Args {
     #[arg(long, value_name = "NAME")]
     pub backend: Option<String>,
     /// Anisotropic filtering of the textures: 1 (plain trilinear), 2, 4, 8 or 16. A software GPU
-    /// draws about 1.7 times faster with 1; the floor far away blurs.
+    /// draws about 1.5 times faster with 1; the floor far away blurs.
     #[arg(long, value_name = "N", default_value_t = DEFAULT_ANISOTROPY, value_parser = parse_anisotropy)]
     pub anisotropy: u16,
     /// Folder with the textures and the skull.

@@ -266,7 +266,7 @@ pub struct SceneOptions {
     pub model: Option<PathBuf>,
     /// How many samples the textures' sampler may take along a surface seen at a grazing angle (1:
     /// plain trilinear filtering). The floor far away stays sharp with 8, the default; a software
-    /// GPU draws the room about 1.7 times faster with 1 (see the book's cost page).
+    /// GPU draws the room about 1.5 times faster with 1 (see the book's cost page).
     pub anisotropy: u16,
 }
 

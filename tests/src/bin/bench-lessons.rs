@@ -20,6 +20,9 @@ struct Args {
     /// Frames measured per case, after the warm-up.
     #[arg(long, default_value_t = 40)]
     frames: usize,
+    /// Only this lesson's cases (all of its knob values), and its panel.
+    #[arg(long, value_name = "NAME")]
+    lesson: Option<String>,
     /// Where to write PREFIX.csv and PREFIX-WxH.svg.
     #[arg(long, value_name = "PREFIX")]
     out: Option<PathBuf>,
@@ -42,12 +45,19 @@ fn main() -> ExitCode {
             defaults_only: false,
         },
     };
+    if let Some(name) = &args.lesson
+        && !CASES.iter().any(|c| c.lesson == name)
+    {
+        eprintln!("bench-lessons: error: no lesson `{name}`");
+        return ExitCode::FAILURE;
+    }
     let started = std::time::Instant::now();
     let mut results = Vec::new();
     for size in &plan.sizes {
         for case in CASES
             .iter()
-            .filter(|c| !plan.defaults_only || c.settings.is_empty())
+            .filter(|c| !plan.defaults_only || c.label().is_empty())
+            .filter(|c| args.lesson.as_ref().is_none_or(|name| name == c.lesson))
         {
             match bench::measure(case, *size, &plan) {
                 Ok(measured) => results.push(measured),
@@ -85,7 +95,8 @@ fn main() -> ExitCode {
         false => ((1280, 720), workbook_tests::shots::LESSONS),
     };
     let mut panel = Vec::new();
-    for lesson in panel_lessons {
+    let only = |lesson: &&&str| args.lesson.as_ref().is_none_or(|name| name == *lesson);
+    for lesson in panel_lessons.iter().filter(only) {
         match bench::measure_panel(lesson, panel_size, &plan) {
             Ok(measured) => panel.push(measured),
             Err(error) => {

@@ -2,7 +2,7 @@
 //! positive and the steps sum to no more than the frame's wall time; the benchmark runs in its quick
 //! form and its CSV has the columns the book's page reads.
 
-use workbook_tests::bench::{self, CSV_HEADER, Case, PANEL_CSV_HEADER, Plan};
+use workbook_tests::bench::{self, CSV_HEADER, PANEL_CSV_HEADER, Plan};
 use workbook_tests::shots::LESSONS;
 
 #[test]
@@ -15,18 +15,9 @@ fn step_times_are_positive_and_fit_in_the_frame() {
     };
     let mut results = Vec::new();
     for case in [
-        Case {
-            lesson: "drawing-order",
-            settings: &[],
-        },
-        Case {
-            lesson: "render-to-texture",
-            settings: &[],
-        },
-        Case {
-            lesson: "two-mirrors",
-            settings: &["depth=2"],
-        },
+        bench::case("drawing-order", &[]),
+        bench::case("render-to-texture", &[]),
+        bench::case("two-mirrors", &["depth=2"]),
     ] {
         let measured = bench::measure(&case, (160, 90), &plan).unwrap();
         let Some(total) = measured.gpu_ms else {
