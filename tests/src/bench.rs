@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 
 use anyhow::{Context, Result};
 use workbook::Lesson;
-use workbook::app::headless::{Headless, Request};
+use workbook::app::headless::{FrameTiming, Headless, Request};
 use workbook::room::scene::DEFAULT_ANISOTROPY;
 
 use crate::shots::{ForLesson, for_lesson};
@@ -176,37 +176,12 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
                 adapter: info,
                 steps: step_times,
                 gpu_ms: totals.map(|t| spread(&t)),
-                cpu_us: spread(
-                    &frames
-                        .iter()
-                        .map(|f| f.record_and_submit.as_secs_f64() * 1e6)
-                        .collect::<Vec<_>>(),
-                ),
-                submit_us: spread(
-                    &frames
-                        .iter()
-                        .map(|f| f.submit.as_secs_f64() * 1e6)
-                        .collect::<Vec<_>>(),
-                ),
-                frame_ms: spread(
-                    &frames
-                        .iter()
-                        .map(|f| f.frame.as_secs_f64() * 1e3)
-                        .collect::<Vec<_>>(),
-                ),
+                cpu_us: spread_of(&frames, |f| micros(f.record_and_submit)),
+                submit_us: spread_of(&frames, |f| micros(f.submit)),
+                frame_ms: spread_of(&frames, |f| millis(f.frame)),
                 gpu_memory_mib,
-                one_pass_cpu_us: spread(
-                    &one_pass
-                        .iter()
-                        .map(|f| f.record_and_submit.as_secs_f64() * 1e6)
-                        .collect::<Vec<_>>(),
-                ),
-                one_pass_frame_ms: spread(
-                    &one_pass
-                        .iter()
-                        .map(|f| f.frame.as_secs_f64() * 1e3)
-                        .collect::<Vec<_>>(),
-                ),
+                one_pass_cpu_us: spread_of(&one_pass, |f| micros(f.record_and_submit)),
+                one_pass_frame_ms: spread_of(&one_pass, |f| millis(f.frame)),
             })
         }
     }
@@ -393,6 +368,19 @@ pub fn spread(values: &[f64]) -> [f64; 3] {
     sorted.sort_by(f64::total_cmp);
     let at = |q: f64| sorted[((sorted.len() - 1) as f64 * q).round() as usize];
     [at(0.5), at(0.1), at(0.9)]
+}
+
+/// The median, 10th and 90th percentile of one figure of these frames.
+fn spread_of(frames: &[FrameTiming], figure: impl Fn(&FrameTiming) -> f64) -> [f64; 3] {
+    spread(&frames.iter().map(figure).collect::<Vec<_>>())
+}
+
+fn micros(time: std::time::Duration) -> f64 {
+    time.as_secs_f64() * 1e6
+}
+
+fn millis(time: std::time::Duration) -> f64 {
+    time.as_secs_f64() * 1e3
 }
 
 /// The CSV's header: one row per case, size and step (the step `frame` is the whole frame).

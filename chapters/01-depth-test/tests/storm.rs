@@ -176,6 +176,16 @@ impl Running {
         (status.code(), stdout, stderr)
     }
 
+    /// Closes the window with Escape and checks that the lesson ended with exit code 0 and said
+    /// nothing on stderr; returns what it printed.
+    fn close_cleanly(mut self, window: &str) -> String {
+        self.xdotool(&["windowfocus", "--sync", window, "key", "Escape"]);
+        let (code, stdout, stderr) = self.wait(Duration::from_secs(20));
+        assert_eq!(code, Some(0), "exit code; stderr:\n{stderr}");
+        assert!(stderr.trim().is_empty(), "stderr:\n{stderr}");
+        stdout
+    }
+
     /// The lesson's window, once it has one and has put its state in the title.
     fn window(&mut self) -> String {
         let pid = self.child.id().to_string();
@@ -571,10 +581,7 @@ fn after_injected_surface_errors_an_idle_window_still_shows_the_picture() {
     let window = lesson.window();
     assert_shows(&window, &expected_picture, "idle");
     lesson.assert_alive("after its first frame");
-    lesson.xdotool(&["windowfocus", "--sync", &window, "key", "Escape"]);
-    let (code, stdout, stderr) = lesson.wait(Duration::from_secs(20));
-    assert_eq!(code, Some(0), "exit code; stderr:\n{stderr}");
-    assert!(stderr.trim().is_empty(), "stderr:\n{stderr}");
+    let stdout = lesson.close_cleanly(&window);
     assert_eq!(stdout.lines().count(), 4, "stdout:\n{stdout}");
 }
 
@@ -602,8 +609,5 @@ fn the_panel_sits_beside_the_picture_and_h_hides_it() {
     lesson.xdotool(&press_h);
     assert_shows(&window, &whole, "panel-hidden-again");
     lesson.assert_alive("after hiding and showing its panel");
-    lesson.xdotool(&["windowfocus", "--sync", &window, "key", "Escape"]);
-    let (code, _, stderr) = lesson.wait(Duration::from_secs(20));
-    assert_eq!(code, Some(0), "exit code; stderr:\n{stderr}");
-    assert!(stderr.trim().is_empty(), "stderr:\n{stderr}");
+    lesson.close_cleanly(&window);
 }
