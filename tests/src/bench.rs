@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use anyhow::{Context, Result};
 use workbook::Lesson;
 use workbook::app::headless::{FrameTiming, Headless, Request};
+use workbook::gpu::timing::StepTimer;
 use workbook::room::scene::DEFAULT_ANISOTROPY;
 
 use crate::shots::{ForLesson, for_lesson};
@@ -133,23 +134,16 @@ pub fn measure(case: &Case, size: (u32, u32), plan: &Plan) -> Result<Measured> {
             (request.width, request.height) = size;
             request.scene.anisotropy = case.anisotropy;
             let headless = Headless::<L>::new(&request)?;
+            // The measured frames after the warm-up ones.
+            let run = |timer: Option<&StepTimer>| -> Result<Vec<FrameTiming>> {
+                let frames = (0..plan.warm_up + plan.frames).map(|_| headless.timed_frame(timer));
+                Ok(frames.collect::<Result<Vec<_>>>()?.split_off(plan.warm_up))
+            };
             let timer = headless.timer();
-            let mut frames = Vec::with_capacity(plan.frames);
-            for index in 0..plan.warm_up + plan.frames {
-                let frame = headless.timed_frame(timer.as_ref())?;
-                if index >= plan.warm_up {
-                    frames.push(frame);
-                }
-            }
+            let frames = run(timer.as_ref())?;
             // The same frames recorded as a screenshot or the window without its panel records
             // them: every step in one render pass, no timestamps.
-            let mut one_pass = Vec::with_capacity(plan.frames);
-            for index in 0..plan.warm_up + plan.frames {
-                let frame = headless.timed_frame(None)?;
-                if index >= plan.warm_up {
-                    one_pass.push(frame);
-                }
-            }
+            let one_pass = run(None)?;
             let steps = frames[0].steps.clone();
             let gpu_memory_mib = headless
                 .device()

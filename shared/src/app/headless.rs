@@ -6,13 +6,13 @@ use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
 use crate::app::args::Args;
-use crate::app::runner::{Passes, Runner};
+use crate::app::runner::Runner;
 use crate::gpu::timing::StepTimer;
 use crate::gpu::views::DEPTH_COPY_FORMAT;
 use crate::gpu::{Gpu, HEADLESS_FORMAT, Offscreen};
-use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{self, Show, Stop};
+use crate::lesson::{Lesson, Passes};
 use crate::room::camera::Camera;
 use crate::room::scene::SceneOptions;
 

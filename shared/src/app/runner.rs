@@ -10,7 +10,7 @@ use crate::gpu::views::DepthViewPipelines;
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
-use crate::lesson::{AfterStep, Frame, Lesson};
+use crate::lesson::{AfterStep, Frame, Lesson, Passes};
 use crate::room::camera::{Camera, View};
 use crate::room::scene::{Scene, SceneOptions};
 
@@ -177,12 +177,9 @@ impl<L: Lesson> Runner<L> {
             targets,
             stop.count(),
             Some(&mut present),
-        );
+        )
+        .with_passes(self.passes);
         frame.timer = timer;
-        // Without timestamps nothing needs a pass per step.
-        if self.passes == Passes::One {
-            frame = frame.one_pass();
-        }
         self.lesson.render(&mut frame);
         let (mut encoder, steps) = frame.finish();
         if let Some(error) = failure {
@@ -253,15 +250,13 @@ impl<L: Lesson> Runner<L> {
         color: &'f wgpu::TextureView,
         stop: usize,
         after_step: Option<AfterStep<'f>>,
-        pass: Passes,
+        passes: Passes,
     ) -> Frame<'f> {
         let targets = (color, &self.depth_stencil);
         let scene = &self.scene;
         let cameras = (self.camera, self.view());
-        let mut frame = Frame::new(&self.gpu, scene, cameras, targets, stop, after_step);
-        if pass == Passes::One {
-            frame = frame.one_pass();
-        }
+        let mut frame =
+            Frame::new(&self.gpu, scene, cameras, targets, stop, after_step).with_passes(passes);
         self.lesson.render(&mut frame);
         frame
     }
@@ -363,14 +358,4 @@ impl<L: Lesson> Runner<L> {
 fn depth_bind_group(gpu: &Gpu, scene: &Scene, target: &DepthStencil) -> Option<wgpu::BindGroup> {
     let pipelines = scene.depth_view.as_ref()?;
     Some(pipelines.bind_group(&gpu.device, target))
-}
-
-/// How a frame's steps are recorded: a render pass each (to look between them: timestamps, the
-/// film), or one pass for all the steps on the frame's targets (see `Frame::one_pass`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum Passes {
-    PerStep,
-    /// Where nothing looks between the steps (the default).
-    #[default]
-    One,
 }

@@ -1,5 +1,5 @@
 //! GPU time per step, from timestamp queries: every step of a timed frame is one render pass (an
-//! untimed one may record its steps into one pass: see `Frame::one_pass`), and the pass writes a
+//! untimed one may record its steps into one pass: see `lesson::Passes`), and the pass writes a
 //! timestamp when it begins and one when it ends. Written once, for the benchmark
 //! (`cargo bench-lessons`) and the window's panel. Adapters without `Features::TIMESTAMP_QUERY` get
 //! no timer, and callers say so ("CPU time only").

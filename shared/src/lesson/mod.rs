@@ -8,7 +8,7 @@
 //! `--list-steps`, `--step N`, `--film`, the window's `[` and `]`, the book's step strips and the tests
 //! all read them from the lesson's `render`, and nowhere else. Where nobody looks between the steps
 //! (a screenshot, the window without its panel), the frame records them into one render pass
-//! instead, as an engine would ([`Frame::one_pass`]): the same picture, for a fraction of the CPU's
+//! instead, as an engine would ([`Passes::One`]): the same picture, for a fraction of the CPU's
 //! time per pass.
 //!
 //! Beside the trait: the knobs ([`knobs`]), where a frame stops and what it shows ([`steps`]), and the
@@ -73,8 +73,8 @@ pub struct Frame<'a> {
     after_step: Option<AfterStep<'a>>,
     /// Where each step's pass writes its timestamps, when the frame is timed.
     pub(crate) timer: Option<&'a StepTimer>,
-    /// Record the steps on the frame's own targets into one render pass (see [`Frame::one_pass`]).
-    one_pass: bool,
+    /// How the steps on the frame's own targets are recorded (see [`Passes`]).
+    passes: Passes,
 }
 
 /// What the frame calls after each step it records: with the encoder, the step's index (from 0) and
@@ -109,19 +109,14 @@ impl<'a> Frame<'a> {
             stop,
             after_step,
             timer: None,
-            one_pass: false,
+            passes: Passes::PerStep,
             open: None,
         }
     }
 
-    /// Records the steps drawn on the frame's own targets into one render pass, each step a debug
-    /// group in it, rather than a pass each: for frames whose steps nobody looks at in between (no
-    /// timestamps per step, no film). A step into a lesson's own target still has a pass of its
-    /// own. Each step starts from the state a new pass starts from (stencil reference 0, blend
-    /// constant 0, the whole target as viewport and scissor), so the picture is the same; a test
-    /// checks that it is, for every lesson.
-    pub(crate) fn one_pass(mut self) -> Self {
-        self.one_pass = self.timer.is_none();
+    /// Records the frame's steps as `passes` says (a pass each unless told otherwise).
+    pub(crate) fn with_passes(mut self, passes: Passes) -> Self {
+        self.passes = passes;
         self
     }
 
@@ -173,7 +168,8 @@ impl<'a> Frame<'a> {
         if self.steps.len() > self.stop {
             return;
         }
-        if self.one_pass && target.is_none() {
+        // A timed frame needs a pass a step: the timestamps are written where a pass begins and ends.
+        if self.passes == Passes::One && self.timer.is_none() && target.is_none() {
             return self.record_in_one_pass(name, start, draw);
         }
         // A pass of its own: the frame's one pass, if open, ends first.
@@ -226,6 +222,21 @@ impl<'a> Frame<'a> {
         draw(pass);
         pass.pop_debug_group();
     }
+}
+
+/// How a frame records its steps on its own targets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Passes {
+    /// A render pass each: to look between the steps (timestamps per step, the film, the panel).
+    PerStep,
+    /// All of them in one render pass, each step a debug group in it, where nothing looks between
+    /// the steps (a screenshot, the window without its panel), as an engine would record them. A
+    /// step into a lesson's own target still has a pass of its own, and a timed frame a pass a
+    /// step. Each step starts from the state a new pass starts from (stencil reference 0, blend
+    /// constant 0, the whole target as viewport and scissor), so the picture is the same; a test
+    /// checks that it is, for every knob value of every lesson.
+    #[default]
+    One,
 }
 
 /// Where a step's pass begins: from cleared buffers, or on top of what the frame has drawn so far.

@@ -4,8 +4,8 @@
 
 use image::Rgba;
 use workbook::Show;
-use workbook::app::runner::Passes;
 use workbook::gpu::views::stencil_colour;
+use workbook::lesson::Passes;
 use workbook::room::scene::CLEAR_SRGB;
 use workbook_tests::shots::{self, LESSONS, PAIRS, STRICT};
 use workbook_tests::strips;
