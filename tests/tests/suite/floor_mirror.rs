@@ -251,6 +251,7 @@ impl Lesson for SkullFromBelow {
 const SAME_PICTURE: Threshold = Threshold {
     mean: 0.002,
     visible_share: 0.001,
+    largest_patch: STRICT.largest_patch,
 };
 
 #[test]

@@ -135,6 +135,7 @@ impl Lesson for RoomFromBelow {
 const SAME_PICTURE: Threshold = Threshold {
     mean: 0.002,
     visible_share: 0.001,
+    largest_patch: STRICT.largest_patch,
 };
 
 #[test]

@@ -183,6 +183,7 @@ impl Lesson for RoomFromBehind {
 const SAME_PICTURE: Threshold = Threshold {
     mean: 0.002,
     visible_share: 0.001,
+    largest_patch: STRICT.largest_patch,
 };
 
 /// Lesson 5's oracle for the first level: what the first mirror shows from camera C is the room seen

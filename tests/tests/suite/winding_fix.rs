@@ -8,6 +8,7 @@ use workbook::app::headless::{self, Request};
 use workbook::room::camera::Camera;
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, wgpu};
 use workbook_tests::flip::{self, Threshold};
+use workbook_tests::shots::STRICT;
 
 /// The skull's mirror image alone, drawn with lesson 5's reflected recipe for its `winding-fix`
 /// value, without the stencil (there is no mirror to mark).
@@ -76,6 +77,7 @@ fn mirrored(camera: Camera) -> Camera {
 const SAME_PICTURE: Threshold = Threshold {
     mean: 0.002,
     visible_share: 0.001,
+    largest_patch: STRICT.largest_patch,
 };
 
 fn compare(winding_fix: &str, camera: Camera) -> flip::Comparison {
