@@ -5,12 +5,14 @@
 //! The crop is placed from FLIP's per-pixel errors ([`crate::flip::Comparison::errors`]) rather than
 //! by hand, so it follows the pictures when a lesson's scene or camera changes.
 
+use std::sync::OnceLock;
+
 use anyhow::{Context, Result};
 use image::imageops::{self, FilterType};
 use image::{Rgba, RgbaImage};
 
 use crate::flip::{self, VISIBLE};
-use crate::shots::{Pair, SIZE, Shot};
+use crate::shots::{PAIRS, Pair, SIZE, Shot};
 
 /// The share of the visibly different pixels the crop aims to hold: high enough that the crop shows
 /// the difference, low enough that a few stray pixels (texture shimmer) far away are left out.
@@ -73,15 +75,10 @@ impl Rect {
 
 /// The coordinates of the pixels whose error is visible.
 fn visible(errors: &[f32], width: u32) -> impl Iterator<Item = (u32, u32)> + '_ {
-    above(errors, width, VISIBLE)
-}
-
-/// The coordinates of the pixels whose error exceeds `threshold`.
-fn above(errors: &[f32], width: u32, threshold: f32) -> impl Iterator<Item = (u32, u32)> + '_ {
     errors
         .iter()
         .enumerate()
-        .filter(move |(_, e)| **e > threshold)
+        .filter(|(_, e)| **e > VISIBLE)
         .map(move |(i, _)| (i as u32 % width, i as u32 / width))
 }
 
@@ -94,18 +91,12 @@ fn above(errors: &[f32], width: u32, threshold: f32) -> impl Iterator<Item = (u3
 /// image; where the differences genuinely span the image, only the wider boxes reach the coverage, and
 /// the crop grows to match (up to the whole image).
 pub fn crop_box(errors: &[f32], width: u32, height: u32) -> Option<Rect> {
-    crop_box_above(errors, width, height, VISIBLE)
-}
-
-/// [`crop_box`] for the pixels whose error exceeds `threshold` instead of [`VISIBLE`]: for a pair
-/// whose difference is real but subtle everywhere (no single pixel visibly different).
-pub fn crop_box_above(errors: &[f32], width: u32, height: u32, threshold: f32) -> Option<Rect> {
     assert_eq!(
         errors.len(),
         width as usize * height as usize,
         "one error per pixel"
     );
-    let points: Vec<(u32, u32)> = above(errors, width, threshold).collect();
+    let points: Vec<(u32, u32)> = visible(errors, width).collect();
     if points.is_empty() {
         return None;
     }
@@ -245,10 +236,6 @@ pub fn outlined(difference: &image::RgbImage, rect: Rect) -> RgbaImage {
     image
 }
 
-/// A pixel error that a reader sees when told where to look: the crop's fallback for a wrong
-/// picture that differs subtly everywhere (planar-shadow's mirror without the shadow's image).
-pub const SUBTLE: f32 = 0.08;
-
 /// The zoom's crops come from renders this many times the book's size, so that the enlargement
 /// shows detail the renderer drew rather than blown-up pixels.
 pub const ZOOM_SCALE: u32 = 2;
@@ -277,14 +264,40 @@ impl Pair {
         format!("{}-flip", self.wrong)
     }
 
-    /// Renders both pictures, places the crop where FLIP sees them differ, and makes the images.
+    /// The pair as the book has it: its two committed pictures compared. The crop is placed from
+    /// this alone, so it is the same on every machine (FLIP runs on the CPU); a driver's own
+    /// choices — texture filtering, z-fighting — never move it.
+    pub fn in_the_book(&self) -> Result<flip::Comparison> {
+        let (wrong, right) = (Shot::named(self.wrong)?, Shot::named(self.right)?);
+        flip::compare(&flip::load(&right.path())?, &flip::load(&wrong.path())?)
+    }
+
+    /// The pair as this machine renders it, compared (once per process: several tests ask).
+    pub fn here(&self) -> Result<&'static flip::Comparison> {
+        static HERE: OnceLock<Vec<Result<flip::Comparison, String>>> = OnceLock::new();
+        let all = HERE.get_or_init(|| {
+            let compare = |pair: &Pair| {
+                let (wrong, right) = (Shot::named(pair.wrong)?, Shot::named(pair.right)?);
+                flip::compare(&right.render()?, &wrong.render()?)
+            };
+            PAIRS
+                .iter()
+                .map(|pair| compare(pair).map_err(|e| format!("{e:#}")))
+                .collect()
+        });
+        let index = PAIRS
+            .iter()
+            .position(|pair| (pair.wrong, pair.right) == (self.wrong, self.right))
+            .context("a pair of the catalogue")?;
+        all[index].as_ref().map_err(|e| anyhow::anyhow!("{e}"))
+    }
+
+    /// Places the crop where the book's two pictures differ, and makes the images: the zoom from
+    /// renders at [`ZOOM_SCALE`] times the size, the difference image from the book's pictures.
     pub fn make(&self) -> Result<PairImages> {
         let (wrong, right) = (Shot::named(self.wrong)?, Shot::named(self.right)?);
-        let comparison = flip::compare(&right.render()?, &wrong.render()?)?;
-        // Where they differ visibly; for a subtle pair, where they differ most.
-        let rect = [VISIBLE, SUBTLE]
-            .iter()
-            .find_map(|&threshold| crop_box_above(&comparison.errors, SIZE.0, SIZE.1, threshold))
+        let comparison = self.in_the_book()?;
+        let rect = crop_box(&comparison.errors, SIZE.0, SIZE.1)
             .with_context(|| format!("{} does not differ from {}", self.wrong, self.right))?;
         let large = (SIZE.0 * ZOOM_SCALE, SIZE.1 * ZOOM_SCALE);
         let (right_large, wrong_large) = (right.render_at(large)?, wrong.render_at(large)?);

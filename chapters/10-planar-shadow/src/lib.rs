@@ -198,7 +198,9 @@ impl Lesson for PlanarShadow {
         let plane = shadow_plane(surface);
         let world = shadow_world(scene.skull.world(), &key, plane, knobs.get("lift"));
         let shadow = scene.placed_as(device, &scene.skull, world, Some(SHADOW_MATERIAL));
-        let mut mirror_world = MirrorWorld::new(gpu, scene, mirror_plane(), &[&scene.skull]);
+        // The mirror shows the floor the shadow falls on (and the crate), not only the skull: the
+        // shadow's image must lie on something for the eye to see it darken.
+        let mut mirror_world = MirrorWorld::new(gpu, scene, mirror_plane(), &reflected(scene));
         mirror_world.set_room_lights(lights);
         // The shadow's own mirror image: the shadow (made by the real light) reflected. (A shadow
         // on the wall lies in the mirror's own plane: its image is itself.)
@@ -243,11 +245,13 @@ impl Lesson for PlanarShadow {
             pass.set_stencil_reference(1);
             scene.mirror.draw(pass);
         });
-        frame.step("draw the reflected skull", |pass| {
+        frame.step("draw the reflected room", |pass| {
             pass.set_pipeline(&self.draw_reflection);
             pass.set_stencil_reference(1);
             self.mirror_world.bind(pass);
-            self.mirror_world.draw(pass, &scene.skull);
+            for object in reflected(scene) {
+                self.mirror_world.draw(pass, object);
+            }
         });
 
         // The shadow in the mirror: where the mark (bit 0) is set and the shadow's bit (bit 1) is
@@ -279,6 +283,11 @@ impl Lesson for PlanarShadow {
         });
     }
     // ANCHOR_END: render
+}
+
+/// What the wall mirror shows: the floor, the crate and the skull in front of it.
+fn reflected(scene: &Scene) -> [&Drawable; 3] {
+    [&scene.floor, &scene.crate_box, &scene.skull]
 }
 
 /// The room: floor, wall, crate and skull (the mirror is marked, then drawn as glass).

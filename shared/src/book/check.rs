@@ -60,6 +60,11 @@ pub fn compare<L: Lesson>(
     })
 }
 
+/// What `--check` and the panel say of a picture that is the driver's own choice.
+pub fn not_compared(reason: &str) -> String {
+    format!("driver-dependent ({reason}): not compared")
+}
+
 /// The book's screenshot that shows exactly `setting`, if there is one.
 pub fn matching<L: Lesson>(shots: &[BookShot], setting: &Setting) -> Option<BookShot> {
     shots
@@ -83,6 +88,10 @@ pub fn check<L: Lesson>(
     }
     let mut differ = Vec::new();
     for shot in &shots {
+        if let Some(reason) = &shot.driver_dependent {
+            println!("{}: {}", shot.name, not_compared(reason));
+            continue;
+        }
         let setting = shot.setting::<L>(overrides)?;
         let verdict = compare::<L>(shot, &setting, scene, backend)?;
         let summary = verdict.comparison.summary();

@@ -36,7 +36,14 @@ pub struct BookShot {
     pub lesson: String,
     /// What to add to `cargo run -p <lesson> --` to make it (`--size` included).
     pub arguments: Vec<String>,
+    /// Why the picture is the driver's own choice (`z-fighting`), where it is: then it is never
+    /// compared pixel for pixel, on any machine (the tests judge it by what it teaches). In the
+    /// list, a comment at the line's end: `# driver-dependent: z-fighting`.
+    pub driver_dependent: Option<String>,
 }
+
+/// The list's mark of a driver-dependent picture, after the arguments.
+const DRIVER_DEPENDENT: &str = "# driver-dependent: ";
 
 /// What a picture shows: the settings the window can be in, compared as a whole.
 #[derive(Debug, Clone, PartialEq)]
@@ -73,7 +80,11 @@ impl BookShot {
     pub fn line(&self) -> String {
         let mut words = vec![self.name.as_str(), self.lesson.as_str()];
         words.extend(self.arguments.iter().map(String::as_str));
-        words.join(" ")
+        let line = words.join(" ");
+        match &self.driver_dependent {
+            Some(reason) => format!("{line}  {DRIVER_DEPENDENT}{reason}"),
+            None => line,
+        }
     }
 
     /// The reference picture.
@@ -115,12 +126,17 @@ pub fn read(dir: &Path) -> Result<Vec<BookShot>> {
     text.lines()
         .filter(|line| !line.trim().is_empty() && !line.starts_with('#'))
         .map(|line| {
+            let (line, driver_dependent) = match line.split_once(DRIVER_DEPENDENT) {
+                Some((line, reason)) => (line, Some(reason.trim().to_string())),
+                None => (line, None),
+            };
             let mut words = line.split_whitespace().map(str::to_string);
             match (words.next(), words.next()) {
                 (Some(name), Some(lesson)) => Ok(BookShot {
                     name,
                     lesson,
                     arguments: words.collect(),
+                    driver_dependent,
                 }),
                 _ => bail!(
                     "{}: a line without a name and a lesson: `{line}`",
@@ -145,7 +161,8 @@ pub fn list_text(shots: &[BookShot]) -> String {
     let mut text = String::from(
         "# The book's screenshots: name, lesson, and the arguments of `cargo run -p <lesson> --` that\n\
          # make each. Written by `cargo screenshots` from tests/src/shots.rs; read by the window's\n\
-         # panel (\"compare with the book\") and by `--check`.\n",
+         # panel (\"compare with the book\") and by `--check`. A picture marked driver-dependent is the\n\
+         # GPU's own choice (z-fighting): they say so and do not compare it.\n",
     );
     for shot in shots {
         text += &shot.line();
@@ -169,11 +186,18 @@ mod tests {
                 "--set".into(),
                 "k=v".into(),
             ],
+            driver_dependent: None,
+        };
+        let fighting = BookShot {
+            name: "a-c".into(),
+            driver_dependent: Some("z-fighting".into()),
+            ..shot.clone()
         };
         let dir = std::env::temp_dir().join(format!("book-shots-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join(LIST), list_text(std::slice::from_ref(&shot))).unwrap();
-        assert_eq!(read(&dir).unwrap(), vec![shot]);
+        let shots = [shot, fighting];
+        std::fs::write(dir.join(LIST), list_text(&shots)).unwrap();
+        assert_eq!(read(&dir).unwrap(), shots);
         std::fs::write(dir.join(LIST), "lonely\n").unwrap();
         assert!(read(&dir).is_err());
         std::fs::remove_dir_all(&dir).unwrap();

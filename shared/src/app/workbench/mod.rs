@@ -572,6 +572,14 @@ impl<L: Lesson> Workbench<L> {
             self.verdicts = None;
             return;
         };
+        if let Some(reason) = &shot.driver_dependent {
+            self.book = Book::NotCompared {
+                name: shot.name.clone(),
+                why: check::not_compared(reason),
+            };
+            self.verdicts = None;
+            return;
+        }
         self.book = Book::Comparing(shot.name.clone());
         let (sender, receiver) = channel();
         let (setting, scene, backend) = (setting.clone(), self.scene.clone(), self.backend.clone());

@@ -42,6 +42,11 @@ pub enum Book {
         summary: String,
         matches: bool,
     },
+    /// The book's screenshot `name` is the driver's own choice: `why` says so.
+    NotCompared {
+        name: String,
+        why: String,
+    },
     Failed(String),
 }
 
@@ -321,6 +326,9 @@ fn book(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
             {
                 actions.push(Action::ShowDifference(shown));
             }
+        }
+        Book::NotCompared { name, why } => {
+            ui.label(format!("This is the book's `{name}`: {why}."));
         }
         Book::Failed(error) => {
             ui.label(format!("Could not compare: {error}"));
