@@ -18,6 +18,7 @@ pub mod lesson;
 pub mod math;
 pub mod room;
 
+#[cfg(not(target_arch = "wasm32"))]
 pub use app::cli::main;
 pub use gpu::Gpu;
 pub use gpu::states::Recipe;

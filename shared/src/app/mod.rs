@@ -3,9 +3,13 @@
 //! helpers the lessons' command-line tests share. Both runners drive a lesson through [`runner`].
 
 pub mod args;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
 pub mod runner;
 pub mod testing;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod window;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod workbench;

@@ -341,6 +341,7 @@ impl<L: Lesson> Runner<L> {
     }
 
     /// Copies the depth buffer into an R32Float texture the caller can read back.
+    #[cfg(not(target_arch = "wasm32"))]
     pub(crate) fn copy_depth(
         &self,
         encoder: &mut wgpu::CommandEncoder,

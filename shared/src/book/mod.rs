@@ -2,6 +2,8 @@
 //! FLIP comparison they are judged by, and the comparison of a lesson with them (`--check`, and the
 //! window's "compare with the book").
 
+#[cfg(not(target_arch = "wasm32"))]
 pub mod check;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod flip;
 pub mod shots;

@@ -138,7 +138,9 @@ impl Gpu {
     /// The device for headless work, one per process and backend choice, shared by every headless
     /// render in it. A test run renders hundreds of frames in one process, and a driver may refuse
     /// new devices after a few dozen: NVIDIA's did on an H200 (measured: "no adapter" after 18
-    /// tests in a row, a crash with 4 threads). Creating one also costs about 30 ms.
+    /// tests in a row, a crash with 4 threads). Creating one also costs about 30 ms. (Not in the
+    /// browser: there a device belongs to the page's one thread, and nothing runs headless.)
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn shared_headless(backend: Option<&str>, verbose: bool) -> Result<Arc<Gpu>> {
         type Shared = Vec<(Option<String>, Arc<Gpu>)>;
         static SHARED: Mutex<Shared> = Mutex::new(Vec::new());
