@@ -28,3 +28,7 @@ mod two_mirrors;
 mod validation;
 mod winding_fix;
 mod windows;
+
+/// Counts the bytes live on the heap, for the soak test.
+#[global_allocator]
+static ALLOCATOR: soak::Counting = soak::Counting;
