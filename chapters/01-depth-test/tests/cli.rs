@@ -98,6 +98,49 @@ fn bad_models_are_refused() {
     }
 }
 
+/// What is not a model file is refused at once, before it is read: a device that never ends, a
+/// FIFO that would block, a folder, and a file past the size limit (sparse: it costs no disk).
+/// Measured (debug, lavapipe): each answers in 0.07-0.10 s with a peak of 90 MB, the same as the
+/// process without a model; before, `/dev/zero` took 7.3 GB in 9 s before it was stopped.
+#[test]
+fn what_is_not_a_model_file_is_refused_at_once() {
+    let shot = scratch("not-read.png");
+    let shot = shot.to_str().unwrap();
+    let big = scratch("three-gigabytes.obj");
+    std::fs::File::create(&big)
+        .unwrap()
+        .set_len(3 << 30)
+        .unwrap();
+    let fifo = scratch("a-fifo.obj");
+    let _ = std::fs::remove_file(&fifo);
+    let made_fifo = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .is_ok_and(|status| status.success());
+    let mut cases = vec![
+        ("/dev/zero".to_string(), "is a device, not a file"),
+        (scratch("").display().to_string(), "is a folder, not a file"),
+        (big.display().to_string(), "larger than 256 MiB"),
+    ];
+    if made_fifo {
+        cases.push((fifo.display().to_string(), "is a FIFO (a pipe), not a file"));
+    } else {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must test a FIFO (mkfifo failed)"
+        );
+        eprintln!("skipped the FIFO: mkfifo failed here");
+    }
+    for (model, expected) in &cases {
+        let started = std::time::Instant::now();
+        run(exe(), &["--model", model, "--screenshot", shot]).assert_one_line_error(expected);
+        let took = started.elapsed();
+        assert!(took.as_secs() < 5, "--model {model} took {took:?}");
+    }
+    let _ = std::fs::remove_file(&big);
+    let _ = std::fs::remove_file(&fifo);
+}
+
 #[test]
 fn a_corrupt_texture_is_refused() {
     let assets = scratch("assets");
@@ -128,7 +171,7 @@ fn a_corrupt_texture_is_refused() {
 
 /// A full disk: one clear line, and the screenshot that was there before is still whole (the PNG is
 /// written beside it and renamed into place only when complete). Needs a small tmpfs, which only
-/// root may mount: skipped with a message where it cannot be made.
+/// root may mount: skipped with a message where it cannot be made, but not under CI.
 #[test]
 fn a_full_disk_gives_one_line_and_keeps_the_old_screenshot() {
     let disk = scratch("full-disk");
@@ -139,6 +182,10 @@ fn a_full_disk_gives_one_line_and_keeps_the_old_screenshot() {
         .status()
         .is_ok_and(|status| status.success());
     if !mounted {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must run the full-disk test: it runs as root, and mounting a small tmpfs failed"
+        );
         eprintln!("skipped: cannot mount a small tmpfs here (needs root)");
         return;
     }

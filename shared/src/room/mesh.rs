@@ -1,6 +1,7 @@
 //! Meshes: the vertex layout, OBJ files through `tobj` (normals computed when a file has none, placed
 //! and scaled to fit), the room's boxes and quads, and their GPU buffers.
 
+use std::io::Read;
 use std::path::Path;
 
 use anyhow::{Context, Result, bail};
@@ -35,6 +36,45 @@ impl Vertex {
     }
 }
 
+/// The largest model file [`MeshData::load_obj`] reads: 256 MiB. The scanned skulls people show
+/// are 5–50 MB of text; reading is bounded so that a wrong file (a disk image, a log) cannot take
+/// the machine's memory.
+pub const MAX_MODEL_BYTES: u64 = 256 << 20;
+
+/// The most triangles a model may have: 5 million (a 50 MB scan has one or two). The loader's
+/// memory grows with them more than with the file's size — tobj keeps every face as 80 bytes
+/// until the end, in a list that doubles as it grows — so they are bounded too.
+pub const MAX_TRIANGLES: usize = 5_000_000;
+
+/// The most heap [`MeshData::load_obj`] holds at once, as a multiple of the file's size, for a
+/// dense mesh as a scan is: measured 6.5 on a 71 MB grid of a million vertices (tobj's faces and
+/// its table of distinct corners are most of it; a test keeps it under this). A file of nothing
+/// but short triangle lines (`f 1 2 3`) costs more per byte, and [`MAX_TRIANGLES`] bounds it: at
+/// the limit (5 million such lines, 40 MB) the lesson's peak memory grew by 0.66 GB, measured.
+pub const MAX_MEMORY_MULTIPLE: f64 = 7.0;
+
+/// What a path that is not a regular file is, for the error message.
+fn kind_of(file_type: &std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if file_type.is_char_device() || file_type.is_block_device() {
+            return "a device";
+        }
+        if file_type.is_fifo() {
+            return "a FIFO (a pipe)";
+        }
+        if file_type.is_socket() {
+            return "a socket";
+        }
+    }
+    if file_type.is_dir() {
+        "a folder"
+    } else {
+        "not a regular file"
+    }
+}
+
 /// A triangle mesh on the CPU; triangles are counter-clockwise seen from outside.
 #[derive(Debug, Clone, Default)]
 pub struct MeshData {
@@ -46,42 +86,61 @@ impl MeshData {
     /// Reads an OBJ file: every object in it, triangulated, as one mesh, centred on the origin and
     /// scaled so that its largest side is 1. Vertex normals are computed when the file has none, or one
     /// that is zero or not finite; the file's others are normalised.
+    ///
+    /// Only a regular file is read (a device such as `/dev/zero`, a FIFO or a folder is refused
+    /// before reading), and no more than [`MAX_MODEL_BYTES`] of it.
     pub fn load_obj(path: &Path) -> Result<Self> {
         let shown = path.display();
-        let bytes = std::fs::read(path).with_context(|| format!("cannot read model `{shown}`"))?;
-        Self::parse_obj(&shown.to_string(), &bytes)
+        let cannot_read = || format!("cannot read model `{shown}`");
+        let metadata = std::fs::metadata(path).with_context(cannot_read)?;
+        if !metadata.is_file() {
+            bail!(
+                "model `{shown}` is {}, not a file: --model takes an OBJ file",
+                kind_of(&metadata.file_type())
+            );
+        }
+        let too_large = || {
+            anyhow::anyhow!(
+                "model `{shown}` is larger than {} MiB, the most a model may be",
+                MAX_MODEL_BYTES >> 20
+            )
+        };
+        if metadata.len() > MAX_MODEL_BYTES {
+            return Err(too_large());
+        }
+        // At most one byte past the limit, should the file have grown since it was measured.
+        let mut bytes = Vec::with_capacity(metadata.len() as usize);
+        let file = std::fs::File::open(path).with_context(cannot_read)?;
+        file.take(MAX_MODEL_BYTES + 1)
+            .read_to_end(&mut bytes)
+            .with_context(cannot_read)?;
+        if bytes.len() as u64 > MAX_MODEL_BYTES {
+            return Err(too_large());
+        }
+        let name = shown.to_string();
+        let models = read_models(&name, &bytes)?;
+        // The text is not needed once tobj has read it: the mesh is built without it.
+        drop(bytes);
+        Self::from_models(&name, models)
     }
 
     /// [`MeshData::load_obj`] on the text of an OBJ file already in memory; `name` names the model in
     /// error messages (`load_obj` passes the file's path).
     pub fn parse_obj(name: &str, bytes: &[u8]) -> Result<Self> {
-        let shown = name;
-        let Ok(text) = std::str::from_utf8(bytes) else {
-            bail!("model `{shown}` is not an OBJ file: OBJ is text, this file is binary");
-        };
-        if let Some(line) = face_past_the_ends(text) {
-            bail!(
-                "model `{shown}` is not a valid OBJ file: the face on line {line} names a texture \
-                 coordinate or normal that is not there"
-            );
-        }
-        let mut reader = std::io::BufReader::new(bytes);
-        let options = tobj::LoadOptions {
-            single_index: true,
-            triangulate: true,
-            ignore_points: true,
-            ignore_lines: true,
-        };
-        // Materials are not used: every model is drawn with the skull's material.
-        let (models, _) = tobj::load_obj_buf(&mut reader, &options, |_| {
-            Ok((Vec::new(), Default::default()))
-        })
-        .map_err(|error| anyhow::anyhow!("model `{shown}` is not a valid OBJ file: {error}"))?;
+        Self::from_models(name, read_models(name, bytes)?)
+    }
 
+    /// The mesh of tobj's models, each freed as soon as its part of the mesh is built.
+    fn from_models(name: &str, models: Vec<tobj::Model>) -> Result<Self> {
+        let shown = name;
         let mut mesh = MeshData::default();
+        let vertices: usize = models.iter().map(|m| m.mesh.positions.len() / 3).sum();
+        let indices: usize = models.iter().map(|m| m.mesh.indices.len()).sum();
+        mesh.vertices.reserve_exact(vertices);
+        mesh.indices.reserve_exact(indices);
         let mut all_have_normals = true;
-        for model in &models {
-            let m = &model.mesh;
+        for model in models {
+            let m = model.mesh;
             let base = mesh.vertices.len() as u32;
             let count = m.positions.len() / 3;
             let has_normals = m.normals.len() == m.positions.len();
@@ -250,35 +309,85 @@ fn unit_length(v: Vec3) -> Option<Vec3> {
     (v / v.abs().max_element()).try_normalize()
 }
 
-/// The line (counted from 1) of the first face that names a texture coordinate or a normal before
-/// the first one or past 2³², if any. `tobj` turns such an index into a huge `usize` and multiplies it
-/// unchecked, which panics in a debug build (an optimised build refuses the face as out of bounds):
-/// `f 1/-2/1 ...` with fewer than two `vt` lines before it, for example.
-fn face_past_the_ends(text: &str) -> Option<usize> {
+/// What tobj does not check in the faces: the first face (its line, counted from 1) that names a
+/// texture coordinate or a normal before the first one or past 2³², if any — `tobj` turns such an
+/// index into a huge `usize` and multiplies it unchecked, which panics in a debug build (an
+/// optimised build refuses the face as out of bounds): `f 1/-2/1 ...` with fewer than two `vt`
+/// lines before it, for example — and more than [`MAX_TRIANGLES`] triangles in all.
+fn check_faces(text: &str) -> Result<(), FaceProblem> {
     let (mut texcoords, mut normals) = (0i64, 0i64);
+    let mut triangles = 0usize;
     for (number, line) in text.lines().enumerate() {
         let mut words = line.split_whitespace();
         match words.next() {
             Some("vt") => texcoords += 1,
             Some("vn") => normals += 1,
             // tobj reads `l` lines as it reads faces.
-            Some("f" | "l") => {
+            Some(kind @ ("f" | "l")) => {
+                let mut corners = 0usize;
                 for corner in words {
+                    corners += 1;
                     // v/vt/vn: tobj guards the vertex index itself, and refuses what does not parse.
                     for (part, count) in corner.split('/').skip(1).zip([texcoords, normals]) {
                         let Ok(index) = part.parse::<i64>() else {
                             continue;
                         };
                         if index < -count || index > i64::from(u32::MAX) {
-                            return Some(number + 1);
+                            return Err(FaceProblem::PastTheEnd(number + 1));
                         }
+                    }
+                }
+                // A polygon of n corners is n - 2 triangles.
+                if kind == "f" {
+                    triangles += corners.saturating_sub(2);
+                    if triangles > MAX_TRIANGLES {
+                        return Err(FaceProblem::TooMany);
                     }
                 }
             }
             _ => {}
         }
     }
-    None
+    Ok(())
+}
+
+/// What [`check_faces`] found wrong.
+enum FaceProblem {
+    /// The face on this line names a texture coordinate or normal that is not there.
+    PastTheEnd(usize),
+    /// More than [`MAX_TRIANGLES`] triangles.
+    TooMany,
+}
+
+/// tobj's models of an OBJ file's text, after the checks tobj does not make.
+fn read_models(name: &str, bytes: &[u8]) -> Result<Vec<tobj::Model>> {
+    let shown = name;
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        bail!("model `{shown}` is not an OBJ file: OBJ is text, this file is binary");
+    };
+    match check_faces(text) {
+        Ok(()) => {}
+        Err(FaceProblem::PastTheEnd(line)) => bail!(
+            "model `{shown}` is not a valid OBJ file: the face on line {line} names a texture \
+             coordinate or normal that is not there"
+        ),
+        Err(FaceProblem::TooMany) => bail!(
+            "model `{shown}` has more than {MAX_TRIANGLES} triangles, the most a model may have"
+        ),
+    }
+    let mut reader = std::io::BufReader::new(bytes);
+    let options = tobj::LoadOptions {
+        single_index: true,
+        triangulate: true,
+        ignore_points: true,
+        ignore_lines: true,
+    };
+    // Materials are not used: every model is drawn with the skull's material.
+    let (models, _) = tobj::load_obj_buf(&mut reader, &options, |_| {
+        Ok((Vec::new(), Default::default()))
+    })
+    .map_err(|error| anyhow::anyhow!("model `{shown}` is not a valid OBJ file: {error}"))?;
+    Ok(models)
 }
 
 /// A mesh in GPU buffers.

@@ -672,3 +672,73 @@ fn fuzz_corpus_replays() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
+
+/// The loader holds a bounded multiple of the file's size: measured by the suite's counting
+/// allocator in a child process of its own (other tests' allocations would blur the peak), on a
+/// generated 1,000×1,000-vertex grid (a 71 MB OBJ, as dense as a scan and larger than most).
+#[test]
+fn loading_a_model_holds_a_bounded_multiple_of_its_size() {
+    let output = std::process::Command::new(std::env::current_exe().unwrap())
+        .args([
+            "--exact",
+            "fuzz::model_memory_child",
+            "--ignored",
+            "--nocapture",
+        ])
+        .env("MODEL_MEMORY_CHILD", "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "the child failed:\n{stdout}");
+    let line = stdout
+        .lines()
+        .find_map(|line| line.find("model memory: ").map(|at| &line[at..]))
+        .unwrap_or_else(|| panic!("no report in:\n{stdout}"));
+    println!("{line}");
+    let number = |key: &str| -> f64 {
+        let field = line.split_whitespace().find_map(|f| f.strip_prefix(key));
+        field.and_then(|n| n.parse().ok()).unwrap()
+    };
+    let multiple = number("peak_bytes=") / number("file_bytes=");
+    assert!(
+        multiple <= workbook::room::mesh::MAX_MEMORY_MULTIPLE,
+        "loading held {multiple:.2} times the file's size: {line}"
+    );
+}
+
+/// Run by the test above in a process of its own.
+#[test]
+#[ignore = "run by loading_a_model_holds_a_bounded_multiple_of_its_size in a child process"]
+fn model_memory_child() {
+    if std::env::var_os("MODEL_MEMORY_CHILD").is_none() {
+        return;
+    }
+    let n = 1000;
+    let mut text = String::new();
+    for i in 0..n {
+        for j in 0..n {
+            let y = ((i as f32 * 0.1).sin() * (j as f32 * 0.1).cos() * 0.1).to_string();
+            text += &format!("v {} {y} {}\n", i as f32 / n as f32, j as f32 / n as f32);
+        }
+    }
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            let (a, c) = (i * n + j + 1, (i + 1) * n + j + 1);
+            text += &format!("f {a} {c} {}\nf {} {c} {}\n", a + 1, a + 1, c + 1);
+        }
+    }
+    let path = std::env::temp_dir().join(format!("model-memory-{}.obj", std::process::id()));
+    std::fs::write(&path, &text).unwrap();
+    let file_bytes = text.len();
+    drop(text);
+    crate::heap::reset_peak();
+    let base = crate::heap::live_bytes();
+    let mesh = MeshData::load_obj(&path).unwrap();
+    let peak = crate::heap::peak_bytes() - base;
+    let _ = std::fs::remove_file(&path);
+    println!(
+        "model memory: file_bytes={file_bytes} peak_bytes={peak} vertices={} triangles={}",
+        mesh.vertices.len(),
+        mesh.indices.len() / 3
+    );
+}

@@ -12,6 +12,7 @@ mod drawing_order;
 mod exercises;
 mod floor_mirror;
 mod fuzz;
+mod heap;
 mod knobs;
 mod mark_mirror;
 mod panel;
@@ -29,6 +30,6 @@ mod validation;
 mod winding_fix;
 mod windows;
 
-/// Counts the bytes live on the heap, for the soak test.
+/// Counts the bytes live on the heap, for the tests that measure memory.
 #[global_allocator]
-static ALLOCATOR: soak::Counting = soak::Counting;
+static ALLOCATOR: heap::Counting = heap::Counting;

@@ -6,7 +6,7 @@
 //! After a warm-up the child samples, every [`EVERY`] frames, two measures:
 //!
 //! - **the Rust heap's live bytes**, from a counting allocator (the suite's global allocator, see
-//!   [`Counting`]): everything the workbook, wgpu and the lessons allocate from Rust. Exact and
+//!   [`crate::heap`]): everything the workbook, wgpu and the lessons allocate from Rust. Exact and
 //!   quiet: between samples it moves by a few KiB at most.
 //! - **resident memory** (RSS, from /proc): also what the driver allocates in C. Noisy: the process
 //!   takes or gives back a ~30 MiB block at random moments (an allocator arena or the driver's
@@ -27,9 +27,7 @@
 //! (`a_leak_of_one_kib_a_frame_fails`). `SOAK_FRAMES=20000` runs
 //! the long form (about six minutes on lavapipe), which sees ten times less.
 
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::process::Command;
-use std::sync::atomic::{AtomicIsize, Ordering};
 
 use workbook::app::headless::{Headless, Request};
 use workbook::wgpu;
@@ -44,44 +42,6 @@ const HEAP_LIMIT_BYTES: i64 = 64 * 1024;
 
 /// Growth of resident memory's floor allowed, after the largest single step is discounted.
 const RSS_LIMIT_KIB: i64 = 4 * 1024;
-
-/// The suite's allocator: the system's, counting the bytes live on the heap (for the soak child;
-/// two atomic additions per allocation cost the other tests nothing they would notice).
-pub struct Counting;
-
-static LIVE_BYTES: AtomicIsize = AtomicIsize::new(0);
-
-// The only unsafe code of the suite: a global allocator must implement an unsafe trait. Each method
-// passes its arguments on to the system allocator unchanged and counts.
-#[allow(unsafe_code)]
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        LIVE_BYTES.fetch_add(layout.size() as isize, Ordering::Relaxed);
-        // SAFETY: the caller's contract for `alloc` is the system allocator's.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        LIVE_BYTES.fetch_add(layout.size() as isize, Ordering::Relaxed);
-        // SAFETY: as for `alloc`.
-        unsafe { System.alloc_zeroed(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        LIVE_BYTES.fetch_sub(layout.size() as isize, Ordering::Relaxed);
-        // SAFETY: `ptr` was allocated by `System` with `layout` (every allocation goes through here).
-        unsafe { System.dealloc(ptr, layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        LIVE_BYTES.fetch_add(
-            new_size as isize - layout.size() as isize,
-            Ordering::Relaxed,
-        );
-        // SAFETY: as for `dealloc`; `new_size` is the caller's, per `realloc`'s contract.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
 
 #[test]
 fn memory_and_wgpu_objects_stay_flat_over_many_frames() {
@@ -208,7 +168,7 @@ fn soak_child() {
     let mut done = warm_up;
     loop {
         rss.push(resident_kib().to_string());
-        heap.push(LIVE_BYTES.load(Ordering::Relaxed).to_string());
+        heap.push(crate::heap::live_bytes().to_string());
         if done >= total {
             break;
         }
