@@ -3,7 +3,8 @@
 //! the crop outlined, so the reader sees both where to look and what changed.
 //!
 //! The crop is placed from FLIP's per-pixel errors ([`crate::flip::Comparison::errors`]) rather than
-//! by hand, so it follows the pictures when a lesson's scene or camera changes.
+//! by hand, so it follows the pictures when a lesson's scene or camera changes — the errors between
+//! the book's two committed pictures, so that it lies in the same place on every machine.
 
 use std::sync::OnceLock;
 

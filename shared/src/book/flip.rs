@@ -99,10 +99,10 @@ pub fn compare(reference: &RgbaImage, test: &RgbaImage) -> Result<Comparison> {
         nv_flip::DEFAULT_PIXELS_PER_DEGREE,
     );
     let values = errors.to_vec();
-    let visible = values.iter().filter(|&&e| e > VISIBLE).count();
+    let mask: Vec<bool> = values.iter().map(|&e| e > VISIBLE).collect();
+    let visible = mask.iter().filter(|&&v| v).count();
     let pool = nv_flip::FlipPool::from_image(&errors);
     let difference = errors.apply_color_lut(&nv_flip::magma_lut());
-    let mask: Vec<bool> = values.iter().map(|&e| e > VISIBLE).collect();
     Ok(Comparison {
         mean: pool.mean(),
         visible_share: visible as f32 / values.len() as f32,
@@ -165,7 +165,7 @@ mod tests {
     }
 
     #[test]
-    fn largest_patch_joins_diagonal_neighbours_only() {
+    fn largest_patch_joins_neighbours_diagonals_included() {
         let mut mask = mask_with(20, 20, (2, 2, 3, 3)); // 9 pixels
         mask[5 * 20 + 5] = true; // touches (4, 4) diagonally: 10
         mask[10 * 20 + 10] = true; // alone
