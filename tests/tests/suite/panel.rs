@@ -205,3 +205,45 @@ fn the_panels_step_times_are_positive_and_fit_in_the_frame() {
         }
     }
 }
+
+/// A frame with no input and nothing new to show is not laid out again (egui's pass costs as much as
+/// the lesson's frame on a fast GPU's machine): the panel's last picture is copied. Input, or a
+/// knob changed, lays it out again.
+#[test]
+fn idle_frames_keep_the_panels_layout() {
+    use reflect_skull::ReflectSkull;
+    use workbook::app::args::Args;
+    use workbook::app::workbench::headless::HeadlessWorkbench;
+
+    let args = Args::parse_for::<ReflectSkull>(["reflect-skull", "--size", "640x360"]).unwrap();
+    let mut bench = HeadlessWorkbench::<ReflectSkull>::new(&args).unwrap();
+    for _ in 0..3 {
+        bench.frame().unwrap();
+    }
+    // Idle: laid out only when the cost and the small buffers refresh (twice a second).
+    let (before, frames) = (bench.workbench.layouts, 20);
+    for _ in 0..frames {
+        bench.frame().unwrap();
+    }
+    let idle = bench.workbench.layouts - before;
+    assert!(idle < frames, "{idle} layouts in {frames} idle frames");
+    // A pointer moving over the window: laid out at once.
+    let before = bench.workbench.layouts;
+    let moved = egui::Event::PointerMoved(egui::pos2(600.0, 100.0));
+    bench.frame_with(vec![moved]).unwrap();
+    assert_eq!(
+        bench.workbench.layouts,
+        before + 1,
+        "input must be laid out"
+    );
+    // A knob changed from outside the panel (a key in the window): laid out at once.
+    let before = bench.workbench.layouts;
+    let knobs = workbook::Knobs::from_settings(ReflectSkull::KNOBS, &["stencil=off"]).unwrap();
+    bench.runner.set_knobs(knobs).unwrap();
+    bench.frame().unwrap();
+    assert_eq!(
+        bench.workbench.layouts,
+        before + 1,
+        "a new knob must be laid out"
+    );
+}

@@ -63,6 +63,11 @@ impl<L: Lesson> HeadlessWorkbench<L> {
     /// lesson alone) and waits for the GPU to finish it, as a window waits for the display.
     /// Returns the CPU's time to build, record and submit it (egui's work included), in ms.
     pub fn frame(&mut self) -> Result<f64> {
+        self.frame_with(Vec::new())
+    }
+
+    /// [`Self::frame`] with egui's input events since the last frame (a pointer moved, a click).
+    pub fn frame_with(&mut self, events: Vec<egui::Event>) -> Result<f64> {
         let gpu = self.runner.gpu.clone();
         gpu.scoped(|| {
             let start = std::time::Instant::now();
@@ -71,6 +76,7 @@ impl<L: Lesson> HeadlessWorkbench<L> {
                 let input = egui::RawInput {
                     screen_rect: Some(egui::Rect::from_min_size(egui::Pos2::ZERO, points)),
                     time: Some(self.start.elapsed().as_secs_f64()),
+                    events,
                     ..Default::default()
                 };
                 let (runner, viewing) = (&mut self.runner, &mut self.viewing);
