@@ -468,9 +468,14 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
                     }
                 }
                 WindowEvent::ModifiersChanged(modifiers) => state.modifiers = modifiers.state(),
-                WindowEvent::KeyboardInput { event, .. }
-                    if event.state == ElementState::Pressed =>
-                {
+                // Not the presses winit makes up for keys held as the window gains focus: a key
+                // pressed just as the window got focus came twice (`H` hid the panel and showed it
+                // again at once).
+                WindowEvent::KeyboardInput {
+                    event,
+                    is_synthetic: false,
+                    ..
+                } if event.state == ElementState::Pressed => {
                     if event.logical_key == Key::Named(NamedKey::Escape) {
                         event_loop.exit();
                     }
