@@ -217,7 +217,10 @@ fn idle_frames_keep_the_panels_layout() {
 
     let args = Args::parse_for::<ReflectSkull>(["reflect-skull", "--size", "640x360"]).unwrap();
     let mut bench = HeadlessWorkbench::<ReflectSkull>::new(&args).unwrap();
-    for _ in 0..3 {
+    // egui animates its widgets in for the first fraction of a second and asks for a frame
+    // meanwhile (a fast GPU draws 20 frames within it): those frames are laid out, rightly.
+    let start = std::time::Instant::now();
+    while start.elapsed().as_secs_f64() < 1.5 {
         bench.frame().unwrap();
     }
     // Idle: laid out only when the cost and the small buffers refresh (twice a second).

@@ -175,8 +175,9 @@ fn soak_child() {
         let frames = EVERY.min(total - done);
         headless.render_frames(frames).unwrap();
         for _ in 0..frames {
-            // The mutant: a frame that keeps `leak` bytes, written so that they are resident.
-            std::mem::forget(vec![1u8; leak]);
+            // The mutant: a frame that keeps `leak` bytes, written so that they are resident
+            // (`black_box`: an optimised build would otherwise drop the unused allocation).
+            std::mem::forget(std::hint::black_box(vec![1u8; leak]));
         }
         done += frames;
     }
