@@ -42,15 +42,19 @@ impl Vertex {
 pub const MAX_MODEL_BYTES: u64 = 256 << 20;
 
 /// The most triangles a model may have: 5 million (a 50 MB scan has one or two). The loader's
-/// memory grows with them more than with the file's size — tobj keeps every face as 80 bytes
+/// memory grows with them more than with the file's size — tobj keeps every face as 104 bytes
 /// until the end, in a list that doubles as it grows — so they are bounded too.
 pub const MAX_TRIANGLES: usize = 5_000_000;
 
 /// The most heap [`MeshData::load_obj`] holds at once, as a multiple of the file's size, for a
-/// dense mesh as a scan is: measured 6.5 on a 71 MB grid of a million vertices (tobj's faces and
-/// its table of distinct corners are most of it; a test keeps it under this). A file of nothing
-/// but short triangle lines (`f 1 2 3`) costs more per byte, and [`MAX_TRIANGLES`] bounds it: at
-/// the limit (5 million such lines, 40 MB) the lesson's peak memory grew by 0.66 GB, measured.
+/// dense mesh as a scan is; a test in the suite (`fuzz::loading_a_model_holds_...`) keeps it under
+/// this. Measured: 4.15 for the skull (1.7 MB), 6.46 for a 71 MB grid of a million vertices and two
+/// million triangles, whose 460 MB peak is, in MB: the file's text 71; tobj's faces, 104 bytes
+/// each in a list of room for 2²¹, 218; tobj's table of distinct corners 69, and 35 more while it
+/// doubles; tobj's vertex lists and indices 67. All but the text are tobj's own, so that only a
+/// loader of our own could make the multiple much smaller. A file of nothing but short triangle
+/// lines (`f 1 2 3`) costs more per byte, and [`MAX_TRIANGLES`] bounds it: at the limit (5 million
+/// such lines, 40 MB) the lesson's peak memory grew by 0.66 GB, measured.
 pub const MAX_MEMORY_MULTIPLE: f64 = 7.0;
 
 /// What a path that is not a regular file is, for the error message.
@@ -59,17 +63,17 @@ fn kind_of(file_type: &std::fs::FileType) -> &'static str {
     {
         use std::os::unix::fs::FileTypeExt;
         if file_type.is_char_device() || file_type.is_block_device() {
-            return "a device";
+            return "a device, not a file";
         }
         if file_type.is_fifo() {
-            return "a FIFO (a pipe)";
+            return "a FIFO (a pipe), not a file";
         }
         if file_type.is_socket() {
-            return "a socket";
+            return "a socket, not a file";
         }
     }
     if file_type.is_dir() {
-        "a folder"
+        "a folder, not a file"
     } else {
         "not a regular file"
     }
@@ -95,7 +99,7 @@ impl MeshData {
         let metadata = std::fs::metadata(path).with_context(cannot_read)?;
         if !metadata.is_file() {
             bail!(
-                "model `{shown}` is {}, not a file: --model takes an OBJ file",
+                "model `{shown}` is {}: --model takes an OBJ file",
                 kind_of(&metadata.file_type())
             );
         }
@@ -314,44 +318,116 @@ fn unit_length(v: Vec3) -> Option<Vec3> {
 /// index into a huge `usize` and multiplies it unchecked, which panics in a debug build (an
 /// optimised build refuses the face as out of bounds): `f 1/-2/1 ...` with fewer than two `vt`
 /// lines before it, for example — and more than [`MAX_TRIANGLES`] triangles in all.
+///
+/// It reads bytes, not characters, for speed in a debug build, where it read by `str::lines` and
+/// `split_whitespace` took most of the skull's load (47 of 54-76 ms, the fastest of five loads;
+/// the grid of [`MAX_MEMORY_MULTIPLE`], 2.4 of 4.1-4.6 s); by bytes, 6-7 ms, and the loads take
+/// 27-39 ms and 2.2-2.5 s (three runs in turns on a busy machine). Only a line of ASCII is split here, on the ASCII whitespace that
+/// `split_whitespace` knows; any other line is read as tobj reads it, by `split_whitespace`.
 fn check_faces(text: &str) -> Result<(), FaceProblem> {
-    let (mut texcoords, mut normals) = (0i64, 0i64);
-    let mut triangles = 0usize;
-    for (number, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        match words.next() {
-            Some("vt") => texcoords += 1,
-            Some("vn") => normals += 1,
-            // tobj reads `l` lines as it reads faces.
-            Some(kind @ ("f" | "l")) => {
-                let mut corners = 0usize;
-                for corner in words {
-                    corners += 1;
-                    // v/vt/vn: tobj guards the vertex index itself, and refuses what does not parse.
-                    for (part, count) in corner.split('/').skip(1).zip([texcoords, normals]) {
-                        let Ok(index) = part.parse::<i64>() else {
-                            continue;
-                        };
-                        if index < -count || index > i64::from(u32::MAX) {
-                            return Err(FaceProblem::PastTheEnd(number + 1));
-                        }
-                    }
-                }
-                // A polygon of n corners is n - 2 triangles.
-                if kind == "f" {
-                    triangles += corners.saturating_sub(2);
-                    if triangles > MAX_TRIANGLES {
-                        return Err(FaceProblem::TooMany);
-                    }
-                }
-            }
-            _ => {}
+    let mut seen = Seen::default();
+    for (number, line) in text.as_bytes().split(|&byte| byte == b'\n').enumerate() {
+        let checked = if line.is_ascii() {
+            seen.line(
+                line.split(|&byte| is_space(byte))
+                    .filter(|word| !word.is_empty()),
+            )
+        } else {
+            // Cut at a newline, the line is UTF-8 as the whole text is.
+            let line = std::str::from_utf8(line).unwrap_or_default();
+            seen.line(line.split_whitespace().map(str::as_bytes))
+        };
+        if checked.is_err() {
+            return Err(FaceProblem::PastTheEnd(number + 1));
+        }
+        if seen.triangles > MAX_TRIANGLES {
+            return Err(FaceProblem::TooMany);
         }
     }
     Ok(())
 }
 
+/// The ASCII characters that `split_whitespace` (and so tobj) takes for whitespace.
+fn is_space(byte: u8) -> bool {
+    matches!(byte, b' ' | b'\t' | b'\n' | 0x0b | 0x0c | b'\r')
+}
+
+/// What [`check_faces`] has seen so far.
+#[derive(Default)]
+struct Seen {
+    texcoords: i64,
+    normals: i64,
+    triangles: usize,
+}
+
+impl Seen {
+    /// Counts one line, given as its words; `Err` for a face that names a texture coordinate or
+    /// normal that is not there.
+    fn line<'a>(&mut self, mut words: impl Iterator<Item = &'a [u8]>) -> Result<(), ()> {
+        let face = match words.next() {
+            Some(b"vt") => {
+                self.texcoords += 1;
+                return Ok(());
+            }
+            Some(b"vn") => {
+                self.normals += 1;
+                return Ok(());
+            }
+            // tobj reads `l` lines as it reads faces.
+            Some(b"f") => true,
+            Some(b"l") => false,
+            _ => return Ok(()),
+        };
+        let mut corners = 0usize;
+        for corner in words {
+            corners += 1;
+            // v/vt/vn: tobj guards the vertex index itself, and refuses what does not parse.
+            let parts = corner.split(|&byte| byte == b'/').skip(1);
+            for (part, count) in parts.zip([self.texcoords, self.normals]) {
+                let Some(index) = parse_i64(part) else {
+                    continue;
+                };
+                if index < -count || index > i64::from(u32::MAX) {
+                    return Err(());
+                }
+            }
+        }
+        // A polygon of n corners is n - 2 triangles.
+        if face {
+            self.triangles += corners.saturating_sub(2);
+        }
+        Ok(())
+    }
+}
+
+/// `i64::from_str` on bytes: an optional sign, then digits, and `None` on overflow.
+fn parse_i64(text: &[u8]) -> Option<i64> {
+    let (negative, digits) = match text {
+        [b'-', rest @ ..] => (true, rest),
+        [b'+', rest @ ..] => (false, rest),
+        _ => (false, text),
+    };
+    if digits.is_empty() {
+        return None;
+    }
+    let mut value = 0i64;
+    for &digit in digits {
+        if !digit.is_ascii_digit() {
+            return None;
+        }
+        let digit = i64::from(digit - b'0');
+        value = value.checked_mul(10)?;
+        value = if negative {
+            value.checked_sub(digit)?
+        } else {
+            value.checked_add(digit)?
+        };
+    }
+    Some(value)
+}
+
 /// What [`check_faces`] found wrong.
+#[derive(Debug, PartialEq)]
 enum FaceProblem {
     /// The face on this line names a texture coordinate or normal that is not there.
     PastTheEnd(usize),
@@ -482,5 +558,84 @@ mod tests {
         let (min, max) = mesh.bounds();
         assert!((min + max).length() < 1e-5);
         assert!(((max - min).max_element() - 1.0).abs() < 1e-6);
+    }
+
+    /// [`check_faces`] as it was written before it read bytes: by characters, as tobj reads.
+    fn check_faces_by_characters(text: &str) -> Result<(), FaceProblem> {
+        let (mut texcoords, mut normals) = (0i64, 0i64);
+        let mut triangles = 0usize;
+        for (number, line) in text.lines().enumerate() {
+            let mut words = line.split_whitespace();
+            match words.next() {
+                Some("vt") => texcoords += 1,
+                Some("vn") => normals += 1,
+                Some(kind @ ("f" | "l")) => {
+                    let mut corners = 0usize;
+                    for corner in words {
+                        corners += 1;
+                        for (part, count) in corner.split('/').skip(1).zip([texcoords, normals]) {
+                            let Ok(index) = part.parse::<i64>() else {
+                                continue;
+                            };
+                            if index < -count || index > i64::from(u32::MAX) {
+                                return Err(FaceProblem::PastTheEnd(number + 1));
+                            }
+                        }
+                    }
+                    if kind == "f" {
+                        triangles += corners.saturating_sub(2);
+                        if triangles > MAX_TRIANGLES {
+                            return Err(FaceProblem::TooMany);
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    /// What [`faces_are_checked_by_bytes_as_by_characters`] makes its lines of.
+    #[rustfmt::skip]
+    const PIECES: [&str; 37] = [
+        "v", "vt", "vn", "f", "l", "vp", "fo", " ", "  ", "\t", "\r", "\x0b", "\x0c", "\x1c", "\u{a0}",
+        "\u{2003}", "\u{85}", "é", "1", "-1", "-2", "+1", "-", "+", "/", "//", "1/-3/1", "1//-2",
+        "4294967296", "-9223372036854775808", "99999999999999999999", "0", "\n", "\n", "\n", "\r\n",
+        "#",
+    ];
+
+    /// Reading bytes finds what reading characters finds, on random lines made of the pieces that
+    /// could tell them apart: whitespace that is not ASCII's, vertical tabs, CR LF, signs, indices
+    /// past the ends and past 2⁶³.
+    #[test]
+    fn faces_are_checked_by_bytes_as_by_characters() {
+        for c in 0..128u8 {
+            assert_eq!(is_space(c), char::from(c).is_whitespace(), "byte {c}");
+        }
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut random = |n: usize| {
+            // xorshift64: the same cases every run.
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % n as u64) as usize
+        };
+        let mut refused = 0;
+        for _ in 0..20_000 {
+            let text: String = (0..1 + random(40))
+                .map(|_| PIECES[random(PIECES.len())])
+                .collect();
+            let expected = check_faces_by_characters(&text);
+            refused += usize::from(expected.is_err());
+            assert_eq!(check_faces(&text), expected, "{text:?}");
+        }
+        assert!(
+            refused > 100,
+            "only {refused} cases refused: the test tests little"
+        );
+        assert_eq!(
+            check_faces(&"f 1 2 3\n".repeat(MAX_TRIANGLES + 1)),
+            Err(FaceProblem::TooMany)
+        );
     }
 }
