@@ -112,12 +112,15 @@ impl Lesson for FloorMirror {
         distance: 12.0,
     };
 
+    fn unavailable(scene: &Scene, knob: &str, value: &str) -> Option<&'static str> {
+        let needs_clip_distances = (knob, value) == ("clip", "clip-distances");
+        (needs_clip_distances && !scene.has_clip_distances())
+            .then_some("this GPU has no user clip distances (wgpu's Features::CLIP_DISTANCES)")
+    }
+
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
-        if knobs.get("clip") == "clip-distances" && !scene.has_clip_distances() {
-            bail!(
-                "this GPU has no user clip distances (wgpu's Features::CLIP_DISTANCES): \
-                 use --set clip=discard or --set clip=oblique"
-            );
+        if let Some(reason) = Self::unavailable(scene, "clip", knobs.get("clip")) {
+            bail!("{reason}: use --set clip=discard or --set clip=oblique");
         }
         let technique = match knobs.get("recipe") {
             "spe" => Technique::Spe,

@@ -12,7 +12,7 @@ use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
 use crate::lesson::{AfterStep, Frame, Lesson, Passes};
 use crate::room::camera::{Camera, View};
-use crate::room::scene::{Scene, SceneOptions};
+use crate::room::scene::Scene;
 
 pub struct Runner<L: Lesson> {
     pub gpu: Arc<Gpu>,
@@ -27,15 +27,27 @@ pub struct Runner<L: Lesson> {
 }
 
 impl<L: Lesson> Runner<L> {
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn new(
         gpu: Arc<Gpu>,
         color_format: wgpu::TextureFormat,
-        scene: &SceneOptions,
+        scene: &crate::room::scene::SceneOptions,
         knobs: Knobs,
         camera: Camera,
         (width, height): (u32, u32),
     ) -> Result<Self> {
         let scene = Scene::new(&gpu, color_format, scene)?;
+        Self::with_scene(gpu, scene, knobs, camera, (width, height))
+    }
+
+    /// The lesson in a room already built (the web page builds it from fetched assets).
+    pub fn with_scene(
+        gpu: Arc<Gpu>,
+        scene: Scene,
+        knobs: Knobs,
+        camera: Camera,
+        (width, height): (u32, u32),
+    ) -> Result<Self> {
         let lesson = L::new(&gpu, &scene, &knobs)?;
         let depth_stencil = DepthStencil::new(&gpu.device, width, height);
         let depth_bind_group = depth_bind_group(&gpu, &scene, &depth_stencil);

@@ -30,6 +30,16 @@ pub struct Gpu {
     errors: Arc<Mutex<Vec<String>>>,
 }
 
+/// The limits the device is opened with: the adapter's own natively; in the browser WebGL2's, which
+/// WebGPU's adapters also meet, with the adapter's largest texture size.
+fn required_limits(adapter: &wgpu::Adapter) -> wgpu::Limits {
+    if cfg!(target_arch = "wasm32") {
+        wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits())
+    } else {
+        adapter.limits()
+    }
+}
+
 /// The backends to try, in turn: `--backend` if given, else `WGPU_BACKEND`; else first the primary
 /// ones (Vulkan, Metal, DX12), and only if none has an adapter, OpenGL (asking GL first would print
 /// EGL errors on machines that have no GL driver, and GL cannot read depth or stencil back).
@@ -71,26 +81,40 @@ pub fn instance(
 
 impl Gpu {
     /// Takes an adapter (one that can present to `surface`, if given) and opens its device.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn new(
         instance: wgpu::Instance,
         backends: wgpu::Backends,
         surface: Option<&wgpu::Surface<'_>>,
         verbose: bool,
     ) -> Result<Self> {
-        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::HighPerformance,
-            force_fallback_adapter: false,
-            compatible_surface: surface,
-            apply_limit_buckets: false,
-        }))
-        .map_err(|_| {
-            anyhow::anyhow!(
-                "no GPU adapter found (tried {:?}); on Linux without a GPU install Mesa's software Vulkan \
-                 driver (`sudo apt-get install mesa-vulkan-drivers`), or pick another backend with \
-                 --backend or WGPU_BACKEND",
-                backends
-            )
-        })?;
+        pollster::block_on(Self::open(instance, backends, surface, verbose))
+    }
+
+    /// [`Gpu::new`], awaited: the browser answers the requests for an adapter and a device later,
+    /// and a page must not block waiting for them.
+    pub async fn open(
+        instance: wgpu::Instance,
+        backends: wgpu::Backends,
+        surface: Option<&wgpu::Surface<'_>>,
+        verbose: bool,
+    ) -> Result<Self> {
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                force_fallback_adapter: false,
+                compatible_surface: surface,
+                apply_limit_buckets: false,
+            })
+            .await
+            .map_err(|_| {
+                anyhow::anyhow!(
+                    "no GPU adapter found (tried {:?}); on Linux without a GPU install Mesa's software \
+                     Vulkan driver (`sudo apt-get install mesa-vulkan-drivers`), or pick another \
+                     backend with --backend or WGPU_BACKEND",
+                    backends
+                )
+            })?;
         let info = adapter.get_info();
         if verbose {
             eprintln!(
@@ -98,15 +122,17 @@ impl Gpu {
                 info.name, info.device_type, info.backend, info.driver, info.driver_info
             );
         }
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("workbook device"),
-            required_features: adapter.features() & OPTIONAL_FEATURES,
-            required_limits: adapter.limits(),
-            experimental_features: wgpu::ExperimentalFeatures::disabled(),
-            memory_hints: wgpu::MemoryHints::MemoryUsage,
-            trace: wgpu::Trace::Off,
-        }))
-        .with_context(|| format!("could not open the device of adapter `{}`", info.name))?;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("workbook device"),
+                required_features: adapter.features() & OPTIONAL_FEATURES,
+                required_limits: required_limits(&adapter),
+                experimental_features: wgpu::ExperimentalFeatures::disabled(),
+                memory_hints: wgpu::MemoryHints::MemoryUsage,
+                trace: wgpu::Trace::Off,
+            })
+            .await
+            .with_context(|| format!("could not open the device of adapter `{}`", info.name))?;
         let errors = Arc::new(Mutex::new(Vec::new()));
         let sink = errors.clone();
         device.on_uncaptured_error(Arc::new(move |error: wgpu::Error| {
@@ -124,6 +150,7 @@ impl Gpu {
     }
 
     /// A device for headless work: no window, no surface.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn headless(backend: Option<&str>, verbose: bool) -> Result<Self> {
         let mut result = Err(anyhow::anyhow!("no backend to try"));
         for backends in backend_choices(backend)? {
@@ -154,7 +181,9 @@ impl Gpu {
     }
 
     /// Runs `work` and fails with the first wgpu error it caused. Error scopes are thread-local,
-    /// so renders on other threads that share the device keep their errors to themselves.
+    /// so renders on other threads that share the device keep their errors to themselves. (Native
+    /// only: it waits for the scopes' answers, which a browser gives later.)
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn scoped<T>(&self, work: impl FnOnce() -> Result<T>) -> Result<T> {
         let scopes = [
             wgpu::ErrorFilter::Validation,

@@ -28,7 +28,7 @@ use crate::room::camera::{BOOK_POSE, Camera, View};
 use crate::room::scene::{self, Scene};
 
 // ANCHOR: lesson
-pub trait Lesson: Sized {
+pub trait Lesson: Sized + 'static {
     /// The package name, e.g. `depth-test`.
     const NAME: &'static str;
     /// The chapter's title, e.g. `Lesson 1: the depth test`.
@@ -42,6 +42,12 @@ pub trait Lesson: Sized {
 
     /// Builds the lesson's pipelines for these knob values. Called again when a knob changes.
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> Result<Self>;
+
+    /// Why this GPU cannot draw a knob's value, where it cannot (a feature it lacks); `None` where
+    /// it can. The web page offers such a value disabled, with the reason.
+    fn unavailable(_scene: &Scene, _knob: &str, _value: &str) -> Option<&'static str> {
+        None
+    }
 
     /// Records one frame as named steps: `frame.clear()`, then `frame.step("...", |pass| ...)`.
     fn render(&self, frame: &mut Frame<'_>);

@@ -2,6 +2,7 @@
 //! its meshes and textures, the orbit camera, mirror worlds in planes other than the wall mirror's,
 //! and the screen shapes of lesson 2.
 
+pub mod assets;
 pub mod camera;
 pub mod mesh;
 pub mod mirror_world;

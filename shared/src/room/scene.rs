@@ -9,7 +9,6 @@ use std::cell::Cell;
 use std::f32::consts::FRAC_1_SQRT_2;
 use std::path::{Path, PathBuf};
 
-use anyhow::Result;
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use wgpu::util::DeviceExt;
 
@@ -17,6 +16,7 @@ use crate::Gpu;
 use crate::gpu::states::{Clip, Recipe};
 use crate::math::reflect::{Plane, normal_matrix, reflection};
 use crate::math::shadow::LightSource;
+use crate::room::assets::Assets;
 use crate::room::camera::{FAR, NEAR, View};
 use crate::room::mesh::{GpuMesh, MeshData, Vertex};
 use crate::room::texture;
@@ -462,25 +462,32 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// The room with the assets `options` names, read from their files.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn new(
         gpu: &Gpu,
         color_format: wgpu::TextureFormat,
         options: &SceneOptions,
-    ) -> Result<Self> {
+    ) -> anyhow::Result<Self> {
+        let assets = Assets::load(&options.assets, options.model.as_deref())?;
+        Ok(Self::with_assets(
+            gpu,
+            color_format,
+            &assets,
+            options.anisotropy,
+        ))
+    }
+
+    /// The room built from assets already read (the web page fetches them).
+    pub fn with_assets(
+        gpu: &Gpu,
+        color_format: wgpu::TextureFormat,
+        assets: &Assets,
+        anisotropy: u16,
+    ) -> Self {
         let (adapter, device, queue) = (&gpu.adapter, &gpu.device, &gpu.queue);
-        let model_path = options
-            .model
-            .clone()
-            .unwrap_or_else(|| options.assets.join("skull.obj"));
-        let skull_mesh = MeshData::load_obj(&model_path)?;
-        let image = |name: &str| texture::load_png(&options.assets.join(name));
-        let (checker, bricks, ice, crate_image) = (
-            image("checker.png")?,
-            image("bricks.png")?,
-            image("ice.png")?,
-            image("crate.png")?,
-        );
-        let (fence_image, water_image) = (image("wirefence.png")?, image("water.png")?);
+        let skull_mesh = &assets.model;
+        let [checker, bricks, ice, crate_image, fence_image, water_image] = &assets.textures;
 
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("frame bind group layout"),
@@ -521,7 +528,7 @@ impl Scene {
         let frame = FrameBinding::new(device, &frame_layout, "frame");
         let reflected_frame = FrameBinding::new(device, &frame_layout, "reflected frame");
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
-            label: Some(match options.anisotropy {
+            label: Some(match anisotropy {
                 1 => "repeating trilinear sampler",
                 _ => "repeating anisotropic sampler",
             }),
@@ -530,7 +537,7 @@ impl Scene {
             mag_filter: wgpu::FilterMode::Linear,
             min_filter: wgpu::FilterMode::Linear,
             mipmap_filter: wgpu::MipmapFilterMode::Linear,
-            anisotropy_clamp: options.anisotropy,
+            anisotropy_clamp: anisotropy,
             ..Default::default()
         });
         let white = image::RgbaImage::from_pixel(1, 1, image::Rgba([255; 4]));
@@ -574,7 +581,7 @@ impl Scene {
             &floor_mesh(),
             Mat4::IDENTITY,
             ROOM_MATERIAL,
-            &checker,
+            checker,
             Vec2::ONE,
         );
         let wall = object(
@@ -582,7 +589,7 @@ impl Scene {
             &wall_mesh(),
             Mat4::IDENTITY,
             ROOM_MATERIAL,
-            &bricks,
+            bricks,
             Vec2::ONE,
         );
         let mirror = object(
@@ -590,7 +597,7 @@ impl Scene {
             &mirror_mesh(),
             Mat4::IDENTITY,
             MIRROR_MATERIAL,
-            &ice,
+            ice,
             Vec2::ONE,
         );
         let crate_box = object(
@@ -598,12 +605,12 @@ impl Scene {
             &MeshData::cuboid(Vec3::splat(CRATE_SIZE)),
             Mat4::from_translation(CRATE_CENTRE),
             ROOM_MATERIAL,
-            &crate_image,
+            crate_image,
             Vec2::ONE,
         );
         let skull = object(
             "skull",
-            &skull_mesh,
+            skull_mesh,
             skull_world(),
             SKULL_MATERIAL,
             &white,
@@ -614,7 +621,7 @@ impl Scene {
             &MeshData::cuboid(Vec3::splat(FENCE_SIZE)),
             Mat4::from_translation(FENCE_CENTRE),
             FENCE_MATERIAL,
-            &fence_image,
+            fence_image,
             Vec2::ONE,
         );
         let water_size = WATER_MAX - WATER_MIN;
@@ -630,7 +637,7 @@ impl Scene {
             &water_mesh,
             Mat4::IDENTITY,
             WATER_MATERIAL,
-            &water_image,
+            water_image,
             Vec2::ONE,
         );
         let floor_mirror = object(
@@ -638,7 +645,7 @@ impl Scene {
             &floor_mirror_mesh(),
             Mat4::IDENTITY,
             FLOOR_MIRROR_MATERIAL,
-            &ice,
+            ice,
             Vec2::ONE,
         );
         let floor_around_mirror = object(
@@ -646,12 +653,12 @@ impl Scene {
             &floor_around_mirror_mesh(),
             Mat4::IDENTITY,
             ROOM_MATERIAL,
-            &checker,
+            checker,
             Vec2::ONE,
         );
         let depth_view = crate::gpu::views::DepthViewPipelines::supported(adapter)
             .then(|| crate::gpu::views::DepthViewPipelines::new(device, color_format, (NEAR, FAR)));
-        Ok(Self {
+        Self {
             color_format,
             floor,
             wall,
@@ -673,7 +680,7 @@ impl Scene {
             depth_view,
             stencil_view: crate::gpu::views::StencilViewPipeline::new(device, color_format),
             blit: crate::gpu::views::Blit::new(device, color_format),
-        })
+        }
     }
 
     /// Whether this device can clip with user clip distances ([`Clip::Distances`]).

@@ -1,8 +1,11 @@
 //! Textures: PNG files through `image`, with a mipmap chain filtered in linear light, on the GPU as sRGB.
 
+#[cfg(not(target_arch = "wasm32"))]
 use std::path::Path;
 
-use anyhow::{Context, Result};
+#[cfg(not(target_arch = "wasm32"))]
+use anyhow::Context;
+use anyhow::Result;
 use image::RgbaImage;
 
 use crate::gpu::{linear_to_srgb, srgb_to_linear};
@@ -11,11 +14,17 @@ use crate::gpu::{linear_to_srgb, srgb_to_linear};
 pub const TEXTURE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
 /// Reads a PNG file into RGBA8.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn load_png(path: &Path) -> Result<RgbaImage> {
     let shown = path.display();
     let bytes = std::fs::read(path).with_context(|| format!("cannot read texture `{shown}`"))?;
-    let image = image::load_from_memory_with_format(&bytes, image::ImageFormat::Png)
-        .map_err(|error| anyhow::anyhow!("texture `{shown}` is not a valid PNG: {error}"))?;
+    decode_png(&shown.to_string(), &bytes)
+}
+
+/// Decodes a PNG file's bytes into RGBA8; `name` names it in errors.
+pub fn decode_png(name: &str, bytes: &[u8]) -> Result<RgbaImage> {
+    let image = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
+        .map_err(|error| anyhow::anyhow!("texture `{name}` is not a valid PNG: {error}"))?;
     Ok(image.to_rgba8())
 }
 
