@@ -15,6 +15,10 @@ if [ ! -f katex/katex.min.css ] || [ ! -d src/katex/fonts ]; then
   rm -rf "$work"
 fi
 
+# The web edition: every lesson's module, its bindings and the room's assets into src/live, which mdBook
+# copies into the book (needs wasm-bindgen-cli of the crate's version, and npm for wasm-opt).
+cargo web ${CI:+--locked}
+
 log=$(mktemp)
 status=0
 mdbook build 2>&1 | tee "$log" || status=$?

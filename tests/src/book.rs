@@ -34,9 +34,12 @@ pub fn problems(src: &Path) -> Vec<String> {
                 if !path.exists() {
                     problems.push(format!("{at}: image {image} does not exist"));
                 }
-                let name = Path::new(&image).file_stem().and_then(|s| s.to_str());
-                let from_catalogue = name.is_some_and(catalogued);
-                if image.starts_with("images/") && !from_catalogue {
+                let name = image.strip_prefix("images/");
+                let from_catalogue = name
+                    .and_then(|file| file.strip_suffix(".png"))
+                    .is_some_and(catalogued);
+                let elsewhere = made_by_another_command(&image).is_some();
+                if image.starts_with("images/") && !from_catalogue && !elsewhere {
                     problems.push(format!(
                         "{at}: image {image} is not made by `cargo screenshots` (add it to the catalogue)"
                     ));
@@ -55,6 +58,24 @@ fn catalogued(name: &str) -> bool {
         || PAIRS
             .iter()
             .any(|pair| pair.zoom_name() == name || pair.difference_name() == name)
+}
+
+/// The book's picture of the web edition, and the command that makes it.
+pub const WEB_PAGE_SHOT: (&str, &str) = (
+    "images/web/reflect-skull-page.png",
+    "cargo web-test --page-screenshot book/src/images/web/reflect-skull-page.png",
+);
+
+/// The command that makes one of the book's images other than the screenshots: the windows'
+/// pictures (`images/window/<lesson>.jpg`, by `scripts/window-shots.sh`) and the web edition's page.
+pub fn made_by_another_command(image: &str) -> Option<&'static str> {
+    let window = image
+        .strip_prefix("images/window/")
+        .and_then(|file| file.strip_suffix(".jpg"));
+    if window.is_some_and(|lesson| crate::shots::LESSONS.contains(&lesson)) {
+        return Some("scripts/window-shots.sh");
+    }
+    (image == WEB_PAGE_SHOT.0).then_some(WEB_PAGE_SHOT.1)
 }
 
 fn markdown_files(dir: &Path) -> Vec<PathBuf> {

@@ -3,11 +3,13 @@
 
 pub mod bench;
 pub mod book;
+pub mod browser;
 pub mod flip;
 pub mod geometry;
 pub mod pairs;
 pub mod shots;
 pub mod strips;
+pub mod web;
 
 use std::path::PathBuf;
 

@@ -664,44 +664,7 @@ pub fn list_text() -> Result<String> {
     Ok(book_shots::list_text(&shots))
 }
 
-/// Every lesson by package name, in the book's order.
-pub const LESSONS: &[&str] = &[
-    "depth-test",
-    "stencil-basics",
-    "mark-mirror",
-    "reflect-skull",
-    "winding-fix",
-    "transparent-mirror",
-    "drawing-order",
-    "floor-mirror",
-    "render-to-texture",
-    "planar-shadow",
-    "two-mirrors",
-];
-
-/// Something to do with a lesson's type, given its package name: see [`for_lesson`].
-pub trait ForLesson {
-    type Output;
-    fn run<L: Lesson>(self) -> Self::Output;
-}
-
-/// Runs `task` with the lesson called `lesson`: the one place that maps package names to types.
-pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
-    Ok(match lesson {
-        "depth-test" => task.run::<depth_test::DepthTest>(),
-        "stencil-basics" => task.run::<stencil_basics::StencilBasics>(),
-        "mark-mirror" => task.run::<mark_mirror::MarkMirror>(),
-        "reflect-skull" => task.run::<reflect_skull::ReflectSkull>(),
-        "winding-fix" => task.run::<winding_fix::WindingFix>(),
-        "transparent-mirror" => task.run::<transparent_mirror::TransparentMirror>(),
-        "drawing-order" => task.run::<drawing_order::DrawingOrder>(),
-        "floor-mirror" => task.run::<floor_mirror::FloorMirror>(),
-        "render-to-texture" => task.run::<render_to_texture::RenderToTexture>(),
-        "planar-shadow" => task.run::<planar_shadow::PlanarShadow>(),
-        "two-mirrors" => task.run::<two_mirrors::TwoMirrors>(),
-        other => bail!("there is no lesson called `{other}`"),
-    })
-}
+pub use lessons::{ForLesson, LESSONS, for_lesson};
 
 /// The knobs of a lesson, by package name.
 pub fn knobs(lesson: &str) -> Result<&'static [workbook::Knob]> {

@@ -9,6 +9,8 @@ pub mod cli;
 pub mod headless;
 pub mod runner;
 pub mod testing;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod window;
 #[cfg(not(target_arch = "wasm32"))]

@@ -48,6 +48,24 @@ fn every_lesson_page_shows_its_step_strip() {
     }
 }
 
+/// Every lesson page can run its lesson: the web edition's block (book/web/live.js makes it a "Run"
+/// bar) stands right above the page's first figure, and names the page's own lesson.
+#[test]
+fn every_lesson_page_runs_its_lesson_above_its_first_figure() {
+    for lesson in workbook_tests::shots::LESSONS {
+        let text = page(&format!("{lesson}.md"));
+        let block = format!("<div class=\"live\" data-lesson=\"{lesson}\"></div>");
+        let at = text
+            .find(&block)
+            .unwrap_or_else(|| panic!("{lesson}.md has no `{block}`"));
+        let figure = text.find("![").expect("a lesson page has figures");
+        assert!(
+            at < figure && text[at + block.len()..figure].trim().is_empty(),
+            "{lesson}.md: the live block must stand right above the first figure"
+        );
+    }
+}
+
 /// Wherever a wrong picture is shown — its lesson's page and the gallery — its enlarged crop and
 /// the difference image are shown too.
 #[test]

@@ -1,0 +1,240 @@
+// The web edition: a lesson live in its book page. Each lesson page has, above its first figure,
+//
+//     <div class="live" data-lesson="reflect-skull"></div>
+//
+// which this script turns into a "Run" bar. Nothing is loaded until the reader clicks it: then the
+// workbook's WebAssembly module (built by `cargo web` into live/) starts the lesson in a canvas, on
+// WebGPU where the browser has it, else WebGL2, and the controls below the canvas are made from the
+// lesson's own data (its knobs, the frame's steps, the buffers): the module's `describe()`.
+//
+// `?backend=webgl2` (or `webgpu`) in the page's address picks the backend. The tests read the
+// canvas through `window.workbookLive` (see tests/src/web.rs).
+(function () {
+  "use strict";
+
+  // The book's size: the canvas draws the very picture of the book's figures.
+  const WIDTH = 800;
+  const HEIGHT = 450;
+  const root = typeof path_to_root === "string" ? path_to_root : "";
+  const live = (window.workbookLive = window.workbookLive || {});
+  let module = null;
+
+  function element(tag, attributes, children) {
+    const node = document.createElement(tag);
+    for (const [name, value] of Object.entries(attributes || {})) {
+      if (name === "text") node.textContent = value;
+      else node.setAttribute(name, value);
+    }
+    for (const child of children || []) node.append(child);
+    return node;
+  }
+
+  function loadModule() {
+    if (!module) {
+      const url = (file) => new URL(root + "live/" + file, document.baseURI).href;
+      module = import(url("workbook_web.js")).then(async (bindings) => {
+        await bindings.default({ module_or_path: url("workbook_web_bg.wasm") });
+        return bindings;
+      });
+    }
+    return module;
+  }
+
+  function wanted_backend() {
+    return new URLSearchParams(window.location.search).get("backend") || "any";
+  }
+
+  async function run(container, bar) {
+    const lesson = container.dataset.lesson;
+    const started = performance.now();
+    const status = element("p", { class: "live-status", text: "starting " + lesson + "…" });
+    bar.replaceWith(status);
+    const canvas = element("canvas", { width: WIDTH, height: HEIGHT, class: "live-canvas" });
+    canvas.setAttribute("tabindex", "0");
+    let page;
+    try {
+      const bindings = await loadModule();
+      container.prepend(canvas);
+      page = await bindings.start(canvas, lesson, root + "live/assets", wanted_backend());
+      page.draw();
+    } catch (error) {
+      canvas.remove();
+      status.textContent =
+        "This browser cannot run the lesson here (" + String(error.message || error) +
+        "): the figures below show its pictures.";
+      live[lesson] = { error: String(error.message || error) };
+      return;
+    }
+    const firstFrame = (performance.now() - started) / 1000;
+    const info = JSON.parse(page.describe());
+    status.textContent =
+      info.backend + " on " + ((await adapterName(info)) || "this browser's adapter") +
+      " · first frame " + firstFrame.toFixed(2) + " s after Run";
+    const state = { page, dirty: false, firstFrame, controls: null };
+    const redraw = () => {
+      if (!state.dirty) {
+        state.dirty = true;
+        requestAnimationFrame(() => {
+          state.dirty = false;
+          try {
+            page.draw();
+          } catch (error) {
+            status.textContent = "error: " + (error.message || error);
+          }
+        });
+      }
+    };
+    state.redraw = redraw;
+    const controls = element("div", { class: "live-controls" });
+    container.append(controls);
+    const refresh = () => build(controls, page, status, redraw, refresh);
+    state.controls = controls;
+    state.refresh = refresh;
+    refresh();
+    orbitWithTheMouse(canvas, page, redraw, refresh);
+    // Last: the tests wait for this, and then find the page complete.
+    live[lesson] = state;
+  }
+
+  // WebGPU keeps the adapter's description to itself in most browsers; its vendor and architecture
+  // say enough (e.g. "google swiftshader").
+  async function adapterName(info) {
+    if (info.adapter || info.backend !== "WebGPU" || !navigator.gpu) return info.adapter;
+    try {
+      const adapter = await navigator.gpu.requestAdapter();
+      const about = (adapter && adapter.info) || {};
+      return [about.vendor, about.architecture].filter(Boolean).join(" ");
+    } catch (error) {
+      return "";
+    }
+  }
+
+  // Drag to orbit, wheel to zoom, as in the window.
+  function orbitWithTheMouse(canvas, page, redraw, refresh) {
+    let last = null;
+    canvas.addEventListener("pointerdown", (event) => {
+      last = [event.clientX, event.clientY];
+      canvas.setPointerCapture(event.pointerId);
+    });
+    canvas.addEventListener("pointermove", (event) => {
+      if (!last) return;
+      // The canvas may be drawn smaller than its pixels: move as if at full size.
+      const scale = canvas.width / canvas.getBoundingClientRect().width;
+      page.orbit((event.clientX - last[0]) * scale, (event.clientY - last[1]) * scale);
+      last = [event.clientX, event.clientY];
+      redraw();
+    });
+    // When a drag ends the pose is rounded as `--camera` writes it, so that the command line
+    // below draws exactly the picture on the canvas.
+    const stop = () => {
+      if (last) {
+        page.set_camera(JSON.parse(page.describe()).camera);
+        redraw();
+        refresh();
+      }
+      last = null;
+    };
+    canvas.addEventListener("pointerup", stop);
+    canvas.addEventListener("pointercancel", stop);
+    canvas.addEventListener(
+      "wheel",
+      (event) => {
+        event.preventDefault();
+        page.zoom(-event.deltaY / 100);
+        page.set_camera(JSON.parse(page.describe()).camera);
+        redraw();
+        refresh();
+      },
+      { passive: false },
+    );
+  }
+
+  // The controls, made again from the lesson's description after every change (a knob may change
+  // the frame's steps).
+  function build(controls, page, status, redraw, refresh) {
+    const info = JSON.parse(page.describe());
+    const apply = (change) => {
+      try {
+        change();
+      } catch (error) {
+        status.textContent = "error: " + (error.message || error);
+      }
+      redraw();
+      refresh();
+    };
+    const rows = [];
+    for (const knob of info.knobs) {
+      const select = element("select", { "data-knob": knob.name, title: knob.meaning });
+      for (const value of knob.values) {
+        const why = knob.unavailable[value];
+        const label = value + (value === knob.default ? " (default)" : "");
+        const option = element("option", { value, text: label });
+        if (why) {
+          option.disabled = true;
+          option.title = why;
+          option.textContent = label + " — " + why;
+        }
+        option.selected = value === knob.chosen;
+        select.append(option);
+      }
+      select.addEventListener("change", () => apply(() => page.set_knob(knob.name, select.value)));
+      rows.push(element("label", { title: knob.meaning }, [knob.name + " ", select]));
+    }
+    const step = element("select", { "data-control": "step", title: "stop the frame after a step, as --step" });
+    step.append(element("option", { value: "0", text: "the whole frame" }));
+    info.steps.forEach((name, index) => {
+      step.append(element("option", { value: String(index + 1), text: "after " + (index + 1) + ". " + name }));
+    });
+    step.value = String(info.step);
+    step.addEventListener("change", () => apply(() => page.set_step(Number(step.value))));
+    rows.push(element("label", {}, ["step ", step]));
+    const show = element("select", { "data-control": "show", title: "the buffer shown, as --show" });
+    for (const buffer of info.shows) {
+      const option = element("option", { value: buffer.name, text: buffer.name });
+      if (buffer.unavailable) {
+        option.disabled = true;
+        option.title = buffer.unavailable;
+        option.textContent = buffer.name + " — " + buffer.unavailable;
+      }
+      show.append(option);
+    }
+    show.value = info.show;
+    show.addEventListener("change", () => apply(() => page.set_show(show.value)));
+    rows.push(element("label", {}, ["buffer ", show]));
+
+    const reset = element("button", { type: "button", class: "live-reset", text: "the lesson's view" });
+    reset.title = "put the camera back where the lesson starts";
+    reset.addEventListener("click", () => apply(() => page.reset_camera()));
+    rows.push(reset);
+
+    const command = element("code", { class: "live-command", text: info.command });
+    const copy = element("button", { type: "button", text: "copy" });
+    copy.addEventListener("click", () => {
+      navigator.clipboard.writeText(info.command).then(
+        () => (copy.textContent = "copied"),
+        () => (copy.textContent = "select the line to copy it"),
+      );
+    });
+    const same = element("p", { class: "live-same" }, [
+      "The same on your machine: ",
+      command,
+      " ",
+      copy,
+    ]);
+    controls.replaceChildren(element("div", { class: "live-knobs" }, rows), same);
+  }
+
+  function setUp(container) {
+    const bar = element("button", { type: "button", class: "live-run" }, [
+      "▶ Run " + container.dataset.lesson + " live in this page (WebGPU, or WebGL2)",
+    ]);
+    bar.addEventListener("click", () => run(container, bar), { once: true });
+    container.append(bar);
+  }
+
+  function setUpAll() {
+    document.querySelectorAll("div.live[data-lesson]").forEach(setUp);
+  }
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", setUpAll);
+  else setUpAll();
+})();

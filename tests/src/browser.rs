@@ -1,0 +1,372 @@
+//! The web edition in a real browser: the built book served on 127.0.0.1, Debian's Chromium driven
+//! over the DevTools protocol (`headless_chrome`), a lesson page's "Run" clicked, its controls set
+//! as a reader sets them, and its canvas read back. `cargo web-test` runs the checks.
+//!
+//! Chromium here has no GPU: both of its backends run on its software renderer, SwiftShader. The
+//! flags that make each one work headless were measured on Chromium 156 (see the web issue): WebGL2
+//! needs `--enable-unsafe-swiftshader`; WebGPU needs Vulkan on SwiftShader, or its canvas reads back
+//! blank.
+
+use std::ffi::OsStr;
+use std::io::{BufRead, BufReader, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::Duration;
+
+use anyhow::{Context, Result, anyhow, bail};
+use base64::Engine;
+use headless_chrome::{Browser, LaunchOptions, Tab};
+use image::RgbaImage;
+
+/// One of the browser's two backends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum WebBackend {
+    WebGpu,
+    WebGl2,
+}
+
+impl WebBackend {
+    pub const BOTH: [WebBackend; 2] = [WebBackend::WebGpu, WebBackend::WebGl2];
+
+    /// The page's name for it (`?backend=`), as the module's `Backend::parse` reads it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::WebGpu => "webgpu",
+            Self::WebGl2 => "webgl2",
+        }
+    }
+
+    /// What the page says runs it.
+    pub fn shown(self) -> &'static str {
+        match self {
+            Self::WebGpu => "WebGPU",
+            Self::WebGl2 => "WebGL2",
+        }
+    }
+
+    fn flags(self) -> &'static [&'static str] {
+        match self {
+            Self::WebGpu => &[
+                "--enable-unsafe-webgpu",
+                "--enable-features=NetworkService,NetworkServiceInProcess,Vulkan",
+                "--use-vulkan=swiftshader",
+                "--use-angle=swiftshader",
+            ],
+            Self::WebGl2 => &["--enable-unsafe-swiftshader", "--use-angle=swiftshader"],
+        }
+    }
+}
+
+/// Serves the folder `root` on 127.0.0.1 at a free port, on threads of its own, for as long as the
+/// process lives; returns the site's address, e.g. `http://127.0.0.1:40123`.
+pub fn serve(root: &Path) -> Result<String> {
+    let listener = TcpListener::bind("127.0.0.1:0").context("cannot listen on 127.0.0.1")?;
+    let address = format!("http://{}", listener.local_addr()?);
+    let root = root.to_path_buf();
+    std::thread::spawn(move || {
+        for stream in listener.incoming().flatten() {
+            let root = root.clone();
+            std::thread::spawn(move || {
+                let _ = answer(&root, stream);
+            });
+        }
+    });
+    Ok(address)
+}
+
+/// Answers one request: GET of a file under `root`, with the content type a browser needs (a
+/// module script must be JavaScript, a module compiled while it streams must be `application/wasm`).
+fn answer(root: &Path, mut stream: TcpStream) -> std::io::Result<()> {
+    let mut reader = BufReader::new(stream.try_clone()?);
+    let mut request = String::new();
+    reader.read_line(&mut request)?;
+    // The headers are not needed; read them so the client is not cut off mid-request.
+    let mut header = String::new();
+    while reader.read_line(&mut header)? > 2 {
+        header.clear();
+    }
+    let path = request.split_whitespace().nth(1).unwrap_or("/");
+    let path = path.split(['?', '#']).next().unwrap_or("/");
+    let relative = path.trim_start_matches('/');
+    let relative = if relative.is_empty() {
+        "index.html"
+    } else {
+        relative
+    };
+    let file = root.join(relative);
+    let body = if relative.split('/').any(|part| part == "..") {
+        None
+    } else {
+        std::fs::read(&file).ok()
+    };
+    let Some(body) = body else {
+        let message = b"not found";
+        write!(
+            stream,
+            "HTTP/1.1 404 Not Found\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+            message.len()
+        )?;
+        return stream.write_all(message);
+    };
+    let kind = match file.extension().and_then(OsStr::to_str).unwrap_or("") {
+        "html" => "text/html; charset=utf-8",
+        "js" => "text/javascript",
+        "wasm" => "application/wasm",
+        "css" => "text/css",
+        "png" => "image/png",
+        "svg" => "image/svg+xml",
+        "json" => "application/json",
+        "woff2" => "font/woff2",
+        "woff" => "font/woff",
+        _ => "application/octet-stream",
+    };
+    write!(
+        stream,
+        "HTTP/1.1 200 OK\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+        body.len()
+    )?;
+    stream.write_all(&body)
+}
+
+/// Debian's Chromium, or the one `CHROMIUM` names.
+pub fn chromium() -> Result<PathBuf> {
+    if let Some(path) = std::env::var_os("CHROMIUM") {
+        return Ok(PathBuf::from(path));
+    }
+    [
+        "/usr/bin/chromium",
+        "/usr/bin/chromium-browser",
+        "/usr/bin/google-chrome",
+    ]
+    .iter()
+    .map(PathBuf::from)
+    .find(|path| path.exists())
+    .context("no Chromium: `sudo apt-get install chromium` (or set CHROMIUM to its path)")
+}
+
+/// A headless Chromium with one backend's flags.
+pub struct WebBrowser {
+    browser: Browser,
+    pub backend: WebBackend,
+}
+
+impl WebBrowser {
+    pub fn launch(backend: WebBackend) -> Result<Self> {
+        let mut args: Vec<&OsStr> = backend.flags().iter().map(OsStr::new).collect();
+        args.push(OsStr::new("--no-sandbox"));
+        let options = LaunchOptions {
+            headless: true,
+            sandbox: false,
+            // Otherwise headless_chrome adds --disable-gpu, and a WebGPU canvas shows nothing.
+            enable_gpu: true,
+            path: Some(chromium()?),
+            window_size: Some((1200, 1000)),
+            idle_browser_timeout: Duration::from_secs(600),
+            // The defaults' --enable-features is this backend's, which adds Vulkan to it.
+            ignore_default_args: vec![OsStr::new(
+                "--enable-features=NetworkService,NetworkServiceInProcess",
+            )],
+            args,
+            ..LaunchOptions::default()
+        };
+        let browser = Browser::new(options).map_err(|e| anyhow!("cannot start Chromium: {e}"))?;
+        Ok(Self { browser, backend })
+    }
+
+    /// Opens `lesson`'s page of the book at `site`, clicks "Run" and waits for the first frame.
+    pub fn open(&self, site: &str, lesson: &str) -> Result<LivePage> {
+        let tab = self.browser.new_tab().map_err(|e| anyhow!("no tab: {e}"))?;
+        tab.set_default_timeout(Duration::from_secs(120));
+        let url = format!("{site}/{lesson}.html?backend={}", self.backend.name());
+        tab.navigate_to(&url)
+            .and_then(|tab| tab.wait_until_navigated())
+            .map_err(|e| anyhow!("cannot open {url}: {e}"))?;
+        let page = LivePage {
+            tab,
+            lesson: lesson.to_string(),
+            first_frame: 0.0,
+        };
+        let clicked = page.evaluate(&format!(
+            "(() => {{ const run = document.querySelector('div.live[data-lesson=\"{lesson}\"] button.live-run');
+                 if (!run) return 'no Run button';
+                 run.click(); return 'ok'; }})()"
+        ))?;
+        if clicked != "ok" {
+            bail!("{lesson}: {clicked}");
+        }
+        let started = page.evaluate(&format!(
+            "new Promise((resolve) => {{
+                 const t0 = performance.now();
+                 (function poll() {{
+                     const s = (window.workbookLive || {{}})['{lesson}'];
+                     if (s && s.error) resolve('error: ' + s.error);
+                     else if (s && s.page) resolve('first frame ' + s.firstFrame);
+                     else if (performance.now() - t0 > 100000) resolve('error: no first frame in 100 s');
+                     else setTimeout(poll, 20);
+                 }})();
+             }})"
+        ))?;
+        let first_frame = match started.strip_prefix("first frame ") {
+            Some(seconds) => seconds.parse::<f64>().unwrap_or(f64::NAN),
+            None => bail!("{lesson} on {}: {started}", self.backend.shown()),
+        };
+        Ok(LivePage {
+            first_frame,
+            ..page
+        })
+    }
+}
+
+/// A lesson running in its page.
+pub struct LivePage {
+    tab: Arc<Tab>,
+    pub lesson: String,
+    /// Seconds from the click on "Run" to the first frame drawn, as the page measured it.
+    pub first_frame: f64,
+}
+
+impl LivePage {
+    /// Runs a script in the page; its value (awaited if a promise) as a string.
+    pub fn evaluate(&self, script: &str) -> Result<String> {
+        let result = self
+            .tab
+            .evaluate(script, true)
+            .map_err(|e| anyhow!("script failed: {e}"))?;
+        Ok(match result.value {
+            Some(serde_json::Value::String(text)) => text,
+            Some(other) => other.to_string(),
+            None => result.description.unwrap_or_default(),
+        })
+    }
+
+    fn state(&self) -> String {
+        format!("window.workbookLive['{}']", self.lesson)
+    }
+
+    /// Draws a frame and reads the canvas back.
+    pub fn capture(&self) -> Result<RgbaImage> {
+        let url = self.evaluate(&format!(
+            "(() => {{ try {{ return {}.page.capture(); }} catch (e) {{ return 'error: ' + (e.message || e); }} }})()",
+            self.state()
+        ))?;
+        let Some(encoded) = url.strip_prefix("data:image/png;base64,") else {
+            bail!("{}: the canvas did not come back: {url}", self.lesson);
+        };
+        let png = base64::engine::general_purpose::STANDARD
+            .decode(encoded)
+            .context("the canvas's PNG is not base64")?;
+        Ok(image::load_from_memory(&png)?.to_rgba8())
+    }
+
+    /// Sets a control of the page as a reader does: picks `value` in the select that `selector`
+    /// finds under the lesson's block, and tells the page it changed. Fails if there is no such
+    /// select or value, or the value is disabled.
+    pub fn choose(&self, selector: &str, value: &str) -> Result<()> {
+        let answer = self.evaluate(&format!(
+            "(() => {{
+                 const select = document.querySelector('div.live[data-lesson=\"{0}\"] {selector}');
+                 if (!select) return 'no control {selector}';
+                 const option = [...select.options].find((o) => o.value === {value:?});
+                 if (!option) return 'no value {value} in {selector}';
+                 if (option.disabled) return 'value {value} is disabled: ' + option.title;
+                 select.value = {value:?};
+                 select.dispatchEvent(new Event('change'));
+                 const status = document.querySelector('div.live[data-lesson=\"{0}\"] p.live-status');
+                 return status.textContent.startsWith('error') ? status.textContent : 'ok';
+             }})()",
+            self.lesson
+        ))?;
+        if answer != "ok" {
+            bail!("{}: {answer}", self.lesson);
+        }
+        Ok(())
+    }
+
+    /// Sets a knob through its select.
+    pub fn set_knob(&self, name: &str, value: &str) -> Result<()> {
+        self.choose(&format!("select[data-knob=\"{name}\"]"), value)
+    }
+
+    /// Stops the frame after step `step` (0: the whole frame) through the step select.
+    pub fn set_step(&self, step: usize) -> Result<()> {
+        self.choose("select[data-control=\"step\"]", &step.to_string())
+    }
+
+    /// Shows a buffer through the buffer select.
+    pub fn set_show(&self, buffer: &str) -> Result<()> {
+        self.choose("select[data-control=\"show\"]", buffer)
+    }
+
+    /// Sets the camera (the page's is the mouse's; this is `--camera`).
+    pub fn set_camera(&self, pose: &str) -> Result<()> {
+        let answer = self.evaluate(&format!(
+            "(() => {{ try {{ {0}.page.set_camera({pose:?}); {0}.redraw(); {0}.refresh(); return 'ok'; }} catch (e) {{ return String(e.message || e); }} }})()",
+            self.state()
+        ))?;
+        if answer != "ok" {
+            bail!("{}: {answer}", self.lesson);
+        }
+        Ok(())
+    }
+
+    /// Puts the camera back where the lesson starts, with the page's button.
+    pub fn reset_camera(&self) -> Result<()> {
+        let answer = self.evaluate(&format!(
+            "(() => {{ const b = document.querySelector('div.live[data-lesson=\"{}\"] button.live-reset');
+                 if (!b) return 'no button to reset the camera'; b.click(); return 'ok'; }})()",
+            self.lesson
+        ))?;
+        if answer != "ok" {
+            bail!("{}: {answer}", self.lesson);
+        }
+        Ok(())
+    }
+
+    /// A screenshot of the page as the browser shows it (through the DevTools protocol, which sees
+    /// a WebGPU canvas where Chromium's `--screenshot` does not); with `only_lesson`, of the
+    /// lesson's block alone: the canvas and its controls.
+    pub fn screenshot(&self, only_lesson: bool) -> Result<Vec<u8>> {
+        let rect = self.evaluate(&format!(
+            "(() => {{ const block = document.querySelector('div.live[data-lesson=\"{}\"]');
+                 block.scrollIntoView();
+                 const r = block.getBoundingClientRect();
+                 return [r.x + window.scrollX, r.y + window.scrollY, r.width, r.height].map(Math.round).join(','); }})()",
+            self.lesson
+        ))?;
+        let rect: Vec<f64> = rect.split(',').filter_map(|n| n.parse().ok()).collect();
+        let clip = (only_lesson && rect.len() == 4).then(|| {
+            headless_chrome::protocol::cdp::Page::Viewport {
+                x: rect[0] - 8.0,
+                y: rect[1] - 8.0,
+                width: rect[2] + 16.0,
+                height: rect[3] + 16.0,
+                scale: 1.0,
+            }
+        });
+        self.tab
+            .capture_screenshot(
+                headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption::Png,
+                None,
+                clip,
+                true,
+            )
+            .map_err(|e| anyhow!("no screenshot: {e}"))
+    }
+
+    /// The "same on your machine" line the page shows.
+    pub fn command_line(&self) -> Result<String> {
+        self.evaluate(&format!(
+            "document.querySelector('div.live[data-lesson=\"{}\"] code.live-command').textContent",
+            self.lesson
+        ))
+    }
+
+    /// The status line (backend and adapter, or an error).
+    pub fn status(&self) -> Result<String> {
+        self.evaluate(&format!(
+            "document.querySelector('div.live[data-lesson=\"{}\"] p.live-status').textContent",
+            self.lesson
+        ))
+    }
+}
