@@ -21,6 +21,7 @@ pub mod room;
 #[cfg(not(target_arch = "wasm32"))]
 pub use app::cli::main;
 pub use gpu::Gpu;
+pub use gpu::pass::Pass;
 pub use gpu::states::Recipe;
 pub use lesson::knobs::{Knob, Knobs};
 pub use lesson::steps::{Show, Stop};

@@ -8,6 +8,7 @@ use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 use workbook::app::headless::{Capture, Headless, Request, Still};
 use workbook::book::shots::{self as book_shots, BookShot};
+use workbook::lesson::story::Story;
 use workbook::room::camera::Camera;
 use workbook::{Knobs, Lesson, Show};
 
@@ -779,6 +780,32 @@ pub fn film(
         }
     }
     for_lesson(lesson, Film(settings, adjust))?
+}
+
+/// The stories of `pixels` in lesson `lesson`'s frame with these knob settings, and the film of the
+/// same frame (every step's buffers), from one lesson built once.
+pub fn stories(
+    lesson: &str,
+    settings: &[&str],
+    pixels: &[(u32, u32)],
+    adjust: impl FnOnce(&mut Request),
+) -> Result<(Vec<Story>, Vec<Still>)> {
+    struct Stories<'a, A>(&'a [&'a str], &'a [(u32, u32)], A);
+    impl<A: FnOnce(&mut Request)> ForLesson for Stories<'_, A> {
+        type Output = Result<(Vec<Story>, Vec<Still>)>;
+        fn run<L: Lesson>(self) -> Self::Output {
+            let Stories(settings, pixels, adjust) = self;
+            let mut request = Request::new::<L>(settings)?;
+            adjust(&mut request);
+            let headless = Headless::<L>::new(&request)?;
+            let stories = pixels
+                .iter()
+                .map(|&pixel| headless.story(pixel, settings.join(" ")))
+                .collect::<Result<_>>()?;
+            Ok((stories, headless.film()?))
+        }
+    }
+    for_lesson(lesson, Stories(settings, pixels, adjust))?
 }
 
 /// Compares `actual` with the reference `book/src/images/<name>.png`. On failure writes

@@ -45,6 +45,22 @@ fn steps_and_buffers_are_checked() {
         .assert_one_line_error("cannot write the film");
 }
 
+/// `--pixel` tells a pixel's story; a pixel outside the picture or malformed is one line.
+#[test]
+fn a_pixel_story_is_told_and_bad_pixels_are_refused() {
+    let told = run(exe(), &["--size", "64x36", "--pixel", "32,20"]);
+    told.assert_clean_success();
+    assert!(
+        told.stdout
+            .contains("Pixel (32, 20) of depth-test at 64×36")
+    );
+    assert!(told.stdout.contains("depth test"), "{}", told.stdout);
+    run(exe(), &["--size", "64x36", "--pixel", "64,0"]).assert_one_line_error("outside the 64x36");
+    run(exe(), &["--pixel", "400"]).assert_one_line_error("expected X,Y");
+    run(exe(), &["--pixel", "x,2"]).assert_one_line_error("expected X,Y");
+    run(exe(), &["--pixel", "1,2", "--step", "2"]).assert_one_line_error("leave out");
+}
+
 #[test]
 fn knobs_are_listed_and_checked() {
     let listed = run(exe(), &["--list-knobs"]);

@@ -16,7 +16,7 @@ use workbook::room::camera::{Camera, TARGET, View};
 use workbook::room::scene::{Drawable, FrameBinding, LIGHTS, mirror_plane};
 use workbook::room::texture_mirror::TextureMirror;
 use workbook::wgpu;
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Pass, Recipe, Scene};
 
 use floor_mirror::{FloorMirror, floor_plane, sink_skull};
 
@@ -223,7 +223,7 @@ pub fn reflected_view_recipe(rastertek: bool, clip: bool) -> Recipe {
 }
 
 impl RenderToTexture {
-    fn draw_room(&self, pass: &mut wgpu::RenderPass<'_>, scene: &Scene) {
+    fn draw_room(&self, pass: &mut Pass<'_, '_>, scene: &Scene) {
         pass.set_pipeline(&self.draw_room);
         for object in room(scene, self.on_floor) {
             object.draw(pass);

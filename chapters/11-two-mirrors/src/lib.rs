@@ -14,7 +14,7 @@ use workbook::room::camera::Camera;
 use workbook::room::mirror_world::MirrorWorld;
 use workbook::room::scene::{Drawable, Placed, mirror_plane};
 use workbook::wgpu::{self, CompareFunction, FrontFace, StencilOperation};
-use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene};
+use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Pass, Recipe, Scene};
 
 // ANCHOR: knobs
 pub const KNOBS: &[Knob] = &[
@@ -281,7 +281,7 @@ impl TwoMirrors {
     }
 
     /// Binds level k's camera and lights: the room's at level 0, the level's world's beyond.
-    fn world_frame(&self, pass: &mut wgpu::RenderPass<'_>, scene: &Scene, level: usize) {
+    fn world_frame(&self, pass: &mut Pass<'_, '_>, scene: &Scene, level: usize) {
         match level {
             0 => scene.bind_frame(pass),
             level => self.worlds[level - 1].bind(pass),

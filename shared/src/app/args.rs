@@ -46,6 +46,10 @@ pub struct Args {
     /// NN-<step>-{color,depth,stencil}.png, at --size.
     #[arg(long, value_name = "DIR")]
     pub film: Option<PathBuf>,
+    /// Tell one pixel's story: for every step and every draw, its colour, depth and stencil, and the
+    /// depth and stencil tests written out with its numbers (X,Y from the top left, at --size).
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pub pixel: Option<(u32, u32)>,
     /// Camera pose YAW,PITCH,DISTANCE in degrees, degrees, metres (the window title shows the current one).
     /// A negative yaw needs no `=`: `--camera -20,15,10`.
     #[arg(long, value_name = "YAW,PITCH,DIST", allow_hyphen_values = true)]
@@ -92,6 +96,15 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
         Some(_) => Err(format!("each side must be 1 to {MAX_SIZE} pixels")),
         None => Err("expected WIDTHxHEIGHT, e.g. 1280x720".to_string()),
     }
+}
+
+/// Parses `X,Y`: a pixel's column and row from the top left.
+fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
+    text.split_once(',')
+        .and_then(|(x, y)| Some((x.trim().parse().ok()?, y.trim().parse().ok()?)))
+        .ok_or_else(|| {
+            "expected X,Y: the pixel's column and row from the top left, e.g. 400,200".into()
+        })
 }
 
 fn parse_anisotropy(text: &str) -> Result<u16, String> {

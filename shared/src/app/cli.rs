@@ -65,7 +65,8 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         );
     }
     let camera = args.camera::<L>()?;
-    let headless = args.list_steps || args.screenshot.is_some() || args.film.is_some();
+    let headless =
+        args.list_steps || args.screenshot.is_some() || args.film.is_some() || args.pixel.is_some();
     if !headless {
         return crate::app::window::run::<L>(&args, knobs, camera);
     }

@@ -260,6 +260,16 @@ impl<L: Lesson> Headless<L> {
         self.runner.gpu.scoped(|| self.capture_unscoped())
     }
 
+    /// The story of one pixel through the frame: every step's and every draw's values there, read
+    /// back from the GPU (see [`crate::app::pixel`]). `settings` heads the story.
+    pub fn story(
+        &self,
+        pixel: (u32, u32),
+        settings: String,
+    ) -> Result<crate::lesson::story::Story> {
+        crate::app::pixel::story(&self.runner, &self.color, pixel, settings)
+    }
+
     /// Renders the frame once, reading back the colour, depth and stencil buffers after every step.
     pub fn film(&self) -> Result<Vec<Still>> {
         self.runner.gpu.scoped(|| self.film_unscoped())
@@ -499,6 +509,9 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
     if args.frames == Some(0) {
         bail!("--frames must be at least 1");
     }
+    if args.pixel.is_some() && (args.frames.is_some() || args.step != Stop::Last) {
+        bail!("--pixel tells the story of the whole frame, once: leave out --frames and --step");
+    }
     if args.frames.is_some() && args.film.is_some() {
         bail!("--film records one frame step by step; --frames counts whole frames");
     }
@@ -536,6 +549,20 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
         save_png(&headless.capture()?.color, path)?;
         if args.verbose {
             eprintln!("wrote {} in {:.0?}", path.display(), start.elapsed());
+        }
+    }
+    if let Some(pixel) = args.pixel {
+        let mut settings = Vec::new();
+        if !request.knobs.changed().is_empty() {
+            settings.push(request.knobs.changed());
+        }
+        if request.camera != L::CAMERA {
+            settings.push(format!("camera {}", request.camera));
+        }
+        let story = headless.story(pixel, settings.join(", "))?;
+        print!("{}", story.text());
+        if args.verbose {
+            eprintln!("told the pixel's story in {:.0?}", start.elapsed());
         }
     }
     if let Some(dir) = &args.film {

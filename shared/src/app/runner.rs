@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use anyhow::Result;
 
+use crate::gpu::pass::Probe;
 use crate::gpu::timing::StepTimer;
 use crate::gpu::views::DepthViewPipelines;
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
@@ -74,6 +75,7 @@ impl<L: Lesson> Runner<L> {
 
     /// Rebuilds the lesson for new knob values.
     pub fn set_knobs(&mut self, knobs: Knobs) -> Result<()> {
+        self.scene.pipelines.forget();
         self.lesson = L::new(&self.gpu, &self.scene, &knobs)?;
         self.knobs = knobs;
         Ok(())
@@ -244,6 +246,58 @@ impl<L: Lesson> Runner<L> {
         self.update();
         let frame = self.frame(color, usize::MAX, Some(after_step), Passes::PerStep);
         frame.finish()
+    }
+
+    /// Records the whole frame into `color` with `probe` watching its pixel (a pass a step, each
+    /// kept to that pixel; every draw drawn as the probe says), calling `after_step` after every
+    /// step: one frame of a pixel's story.
+    pub fn record_probed(
+        &self,
+        color: &wgpu::TextureView,
+        probe: &mut Probe,
+        after_step: AfterStep<'_>,
+    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
+        self.update();
+        let targets = (color, &self.depth_stencil);
+        let cameras = (self.camera, self.view());
+        let mut frame = Frame::new(
+            &self.gpu,
+            &self.scene,
+            cameras,
+            targets,
+            usize::MAX,
+            Some(after_step),
+        )
+        .with_probe(probe);
+        self.lesson.render(&mut frame);
+        frame.finish()
+    }
+
+    /// Copies one pixel of the depth buffer into the same pixel of `target` (R32Float).
+    pub fn copy_depth_pixel(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        pixel: (u32, u32),
+    ) -> Result<()> {
+        let (Some(pipelines), Some(bind_group)) = (&self.scene.depth_view, &self.depth_bind_group)
+        else {
+            anyhow::bail!(DepthViewPipelines::UNSUPPORTED);
+        };
+        pipelines.copy_pixel(encoder, target, bind_group, pixel);
+        Ok(())
+    }
+
+    /// Rebuilds one pixel of the stencil buffer into the same pixel of `target`
+    /// ([`crate::gpu::views::STENCIL_VALUES_FORMAT`]: value / 255).
+    pub fn copy_stencil_pixel(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        pixel: (u32, u32),
+    ) {
+        let views = &self.scene.stencil_view;
+        views.rebuild_pixel(encoder, target, &self.depth_stencil, pixel);
     }
 
     /// Writes this frame's camera and lights.

@@ -111,6 +111,37 @@ impl DepthViewPipelines {
         fullscreen_pass(encoder, label, pipeline, color, bind_group);
     }
 
+    /// Copies one pixel of the depth buffer into the same pixel of `target` (R32Float, the same
+    /// size); the rest of `target` is left as it was.
+    pub fn copy_pixel(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        bind_group: &wgpu::BindGroup,
+        (x, y): (u32, u32),
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("copy a pixel's depth"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Load,
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_scissor_rect(x, y, 1, 1);
+        pass.set_pipeline(&self.copy);
+        pass.set_bind_group(0, bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+
     /// Copies the depth buffer into `target`, an R32Float texture of the same size.
     pub fn copy(
         &self,
@@ -414,6 +445,51 @@ impl StencilViewPipeline {
         });
         let palette = &self.palette_pipeline;
         fullscreen_pass(encoder, "stencil palette", palette, color, &bind_group);
+    }
+
+    /// Rebuilds one pixel's stencil value, bit by bit as [`StencilViewPipeline::show`] does, into
+    /// the same pixel of `values` (a [`STENCIL_VALUES_FORMAT`] texture of the frame's size, cleared
+    /// first: the bits add up): every backend can copy that to a buffer, where a depth-stencil texture
+    /// can be copied only whole, and on some backends not at all.
+    pub fn rebuild_pixel(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        values: &wgpu::TextureView,
+        target: &DepthStencil,
+        (x, y): (u32, u32),
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("a pixel's stencil bits"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: values,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &target.view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Load,
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Load,
+                    store: wgpu::StoreOp::Store,
+                }),
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_scissor_rect(x, y, 1, 1);
+        for (bit, pipeline) in self.bits.iter().enumerate() {
+            pass.set_pipeline(pipeline);
+            pass.set_stencil_reference(1 << bit);
+            pass.draw(0..3, bit as u32..bit as u32 + 1);
+        }
     }
 }
 

@@ -2,6 +2,8 @@
 //! marked with 1 in the stencil buffer), which lessons 4-7 begin with; the step that clears the depth
 //! behind a marked mirror; and lesson 8's frame for a mirror in any plane, for the lessons after it.
 
+use crate::gpu::pass::Pass;
+use crate::gpu::pipelines::Stages;
 use crate::gpu::states::{self, Clip};
 use crate::lesson::Frame;
 use crate::math::reflect::Plane;
@@ -59,39 +61,23 @@ impl ResetDepth {
             bind_group_layouts: &[],
             immediate_size: 0,
         });
-        let recipe = &states::RESET_DEPTH;
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(recipe.name),
-            layout: Some(&layout),
-            vertex: wgpu::VertexState {
-                module: &shader,
-                entry_point: Some("vs_far_plane"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            fragment: Some(wgpu::FragmentState {
-                module: &shader,
-                entry_point: Some("fs_no_colour"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: scene.color_format,
-                    blend: None,
-                    write_mask: recipe.color_writes,
-                })],
-            }),
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(recipe.depth_stencil()),
-            multisample: wgpu::MultisampleState::default(),
-            multiview_mask: None,
-            cache: None,
-        });
+        let stages = Stages {
+            layout,
+            module: shader,
+            vertex: "vs_far_plane",
+            fragment: "fs_no_colour",
+            buffers: &[],
+            color_format: scene.color_format,
+        };
+        let pipeline = scene.pipelines.bake(device, &states::RESET_DEPTH, &stages);
         Self { pipeline }
     }
 
     /// Resets the depth wherever the stencil holds `reference`.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, reference: u32) {
+    pub fn draw(&self, pass: &mut Pass<'_, '_>, reference: u32) {
         pass.set_pipeline(&self.pipeline);
         pass.set_stencil_reference(reference);
+        pass.object("a triangle over the screen");
         pass.draw(0..3, 0..1);
     }
 }

@@ -17,9 +17,11 @@
 pub mod knobs;
 pub mod mirror;
 pub mod steps;
+pub mod story;
 
 use anyhow::Result;
 
+use crate::gpu::pass::{Pass, Probe};
 use crate::gpu::timing::StepTimer;
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::{Knob, Knobs};
@@ -81,6 +83,8 @@ pub struct Frame<'a> {
     pub(crate) timer: Option<&'a StepTimer>,
     /// How the steps on the frame's own targets are recorded (see [`Passes`]).
     passes: Passes,
+    /// Watches one pixel through the frame's own targets (a pixel's story), if asked to.
+    probe: Option<&'a mut Probe>,
 }
 
 /// What the frame calls after each step it records: with the encoder, the step's index (from 0) and
@@ -117,12 +121,20 @@ impl<'a> Frame<'a> {
             timer: None,
             passes: Passes::PerStep,
             open: None,
+            probe: None,
         }
     }
 
     /// Records the frame's steps as `passes` says (a pass each unless told otherwise).
     pub(crate) fn with_passes(mut self, passes: Passes) -> Self {
         self.passes = passes;
+        self
+    }
+
+    /// Watches one pixel of the frame's own targets with `probe`: a pass a step, each kept to that
+    /// pixel, every draw counted and drawn as the probe says.
+    pub fn with_probe(mut self, probe: &'a mut Probe) -> Self {
+        self.probe = Some(probe);
         self
     }
 
@@ -146,7 +158,7 @@ impl<'a> Frame<'a> {
 
     /// One named step: a render pass on the colour and depth-stencil targets, keeping what earlier
     /// steps drew, with the frame's camera and lights bound; `draw` records into it.
-    pub fn step(&mut self, name: &'static str, draw: impl FnOnce(&mut wgpu::RenderPass<'_>)) {
+    pub fn step(&mut self, name: &'static str, draw: impl FnOnce(&mut Pass<'_, '_>)) {
         self.record(name, Start::Kept, None, draw);
     }
 
@@ -157,7 +169,7 @@ impl<'a> Frame<'a> {
         &mut self,
         name: &'static str,
         target: &Offscreen,
-        draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
+        draw: impl FnOnce(&mut Pass<'_, '_>),
     ) {
         self.record(name, Start::Cleared, Some(target), draw);
     }
@@ -168,14 +180,15 @@ impl<'a> Frame<'a> {
         name: &'static str,
         start: Start,
         target: Option<&Offscreen>,
-        draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
+        draw: impl FnOnce(&mut Pass<'_, '_>),
     ) {
         self.steps.push(name);
         if self.steps.len() > self.stop {
             return;
         }
         // A timed frame needs a pass a step: the timestamps are written where a pass begins and ends.
-        if self.passes == Passes::One && self.timer.is_none() && target.is_none() {
+        let alone = self.timer.is_none() && self.probe.is_none() && target.is_none();
+        if self.passes == Passes::One && alone {
             return self.record_in_one_pass(name, start, draw);
         }
         // A pass of its own: the frame's one pass, if open, ends first.
@@ -187,16 +200,24 @@ impl<'a> Frame<'a> {
         let timestamps = self
             .timer
             .and_then(|timer| timer.writes(self.steps.len() - 1));
-        let mut pass = pass(
+        // A probe watches the frame's own targets, not a lesson's.
+        let probe = self.probe.as_deref_mut().filter(|_| target.is_none());
+        let queries = probe.as_ref().map(|probe| &probe.queries);
+        let mut raw = pass(
             &mut self.encoder,
             name,
             start,
             (color, depth_stencil),
-            timestamps,
+            (timestamps, queries),
         );
+        let probe = probe.map(|probe| {
+            probe.step = self.steps.len() - 1;
+            (probe, &self.scene.pipelines, &self.gpu.device)
+        });
+        let mut pass = Pass::new(&mut raw, probe);
         self.scene.bind_frame(&mut pass);
         draw(&mut pass);
-        drop(pass);
+        drop(raw);
         if let Some(after_step) = &mut self.after_step {
             after_step(&mut self.encoder, self.steps.len() - 1, target);
         }
@@ -208,7 +229,7 @@ impl<'a> Frame<'a> {
         &mut self,
         name: &'static str,
         start: Start,
-        draw: impl FnOnce(&mut wgpu::RenderPass<'_>),
+        draw: impl FnOnce(&mut Pass<'_, '_>),
     ) {
         if start == Start::Cleared {
             self.open = None;
@@ -216,7 +237,7 @@ impl<'a> Frame<'a> {
         let targets = (self.color, self.depth_stencil);
         let pass = self.open.get_or_insert_with(|| {
             // The pass holds the encoder until it ends: `finish` and every pass of its own end it.
-            pass(&mut self.encoder, "one pass", start, targets, None).forget_lifetime()
+            pass(&mut self.encoder, "one pass", start, targets, (None, None)).forget_lifetime()
         });
         let (width, height) = self.depth_stencil.size();
         pass.push_debug_group(name);
@@ -224,8 +245,9 @@ impl<'a> Frame<'a> {
         pass.set_blend_constant(wgpu::Color::TRANSPARENT);
         pass.set_viewport(0.0, 0.0, width as f32, height as f32, 0.0, 1.0);
         pass.set_scissor_rect(0, 0, width, height);
-        self.scene.bind_frame(pass);
-        draw(pass);
+        let mut step = Pass::new(pass, None);
+        self.scene.bind_frame(&mut step);
+        draw(&mut step);
         pass.pop_debug_group();
     }
 }
@@ -258,7 +280,10 @@ fn pass<'e>(
     label: &str,
     start: Start,
     (color, depth_stencil): (&wgpu::TextureView, &DepthStencil),
-    timestamp_writes: Option<wgpu::RenderPassTimestampWrites<'_>>,
+    (timestamp_writes, occlusion_query_set): (
+        Option<wgpu::RenderPassTimestampWrites<'_>>,
+        Option<&wgpu::QuerySet>,
+    ),
 ) -> wgpu::RenderPass<'e> {
     let [r, g, b] = scene::CLEAR_SRGB.map(|c| crate::gpu::srgb_to_linear(c) as f64);
     let (color_load, depth, stencil) = match start {
@@ -292,7 +317,7 @@ fn pass<'e>(
             }),
         }),
         timestamp_writes,
-        occlusion_query_set: None,
+        occlusion_query_set,
         multiview_mask: None,
     })
 }

@@ -8,6 +8,8 @@ use anyhow::{Context, Result, bail};
 use glam::{Vec2, Vec3};
 use wgpu::util::DeviceExt;
 
+use crate::gpu::pass::Pass;
+
 /// One vertex as every shader of the workbook reads it.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
@@ -492,7 +494,7 @@ impl GpuMesh {
         }
     }
 
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn draw(&self, pass: &mut Pass<'_, '_>) {
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed(0..self.index_count, 0, 0..1);

@@ -5,6 +5,7 @@
 use glam::Mat4;
 
 use crate::Gpu;
+use crate::gpu::pass::Pass;
 use crate::lesson::Frame;
 use crate::math::clip::oblique_projection;
 use crate::math::reflect::{Plane, reflection};
@@ -95,12 +96,12 @@ impl MirrorWorld {
     }
 
     /// Binds the mirror world's camera and lights (group 0).
-    pub fn bind(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn bind(&self, pass: &mut Pass<'_, '_>) {
         self.frame.bind(pass);
     }
 
     /// Draws the mirror image of `object` (one of those the world was made with).
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, object: &Drawable) {
+    pub fn draw(&self, pass: &mut Pass<'_, '_>, object: &Drawable) {
         let image = self
             .images
             .iter()

@@ -13,6 +13,8 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 use wgpu::util::DeviceExt;
 
 use crate::Gpu;
+use crate::gpu::pass::Pass;
+use crate::gpu::pipelines::{Pipelines, Stages};
 use crate::gpu::states::{Clip, Recipe};
 use crate::math::reflect::{Plane, normal_matrix, reflection};
 use crate::math::shadow::LightSource;
@@ -241,7 +243,7 @@ impl FrameBinding {
     }
 
     /// Binds it as group 0.
-    pub fn bind(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn bind(&self, pass: &mut Pass<'_, '_>) {
         pass.set_bind_group(0, &self.bind_group, &[]);
     }
 }
@@ -305,15 +307,17 @@ pub struct Drawable {
 
 impl Drawable {
     /// Binds this object's transform, material and texture (group 1) and draws it.
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn draw(&self, pass: &mut Pass<'_, '_>) {
         pass.set_bind_group(1, &self.bind_group, &[]);
+        pass.object(self.name);
         self.mesh.draw(pass);
     }
 
     /// Draws the object's mirror image: its world matrix is `R * world`, R the reflection in the
     /// mirror's plane. Bind the reflected lights with [`Scene::bind_reflected_frame`] first.
-    pub fn draw_reflected(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn draw_reflected(&self, pass: &mut Pass<'_, '_>) {
         pass.set_bind_group(1, &self.reflected, &[]);
+        pass.object(self.name);
         self.mesh.draw(pass);
     }
 
@@ -346,9 +350,10 @@ impl Drawable {
     }
 
     /// Draws the object placed elsewhere (see [`Scene::placed`]).
-    pub fn draw_placed(&self, pass: &mut wgpu::RenderPass<'_>, placed: &Placed) {
+    pub fn draw_placed(&self, pass: &mut Pass<'_, '_>, placed: &Placed) {
         debug_assert_eq!(placed.object, self.name, "a placement of another object");
         pass.set_bind_group(1, &placed.bind_group, &[]);
+        pass.object(self.name);
         self.mesh.draw(pass);
     }
 
@@ -459,6 +464,8 @@ pub struct Scene {
     pub(crate) depth_view: Option<crate::gpu::views::DepthViewPipelines>,
     pub(crate) stencil_view: crate::gpu::views::StencilViewPipeline,
     pub(crate) blit: crate::gpu::views::Blit,
+    /// Every pipeline baked for the lesson, with its recipe (a pixel's story names them).
+    pub pipelines: Pipelines,
 }
 
 impl Scene {
@@ -680,6 +687,7 @@ impl Scene {
             depth_view,
             stencil_view: crate::gpu::views::StencilViewPipeline::new(device, color_format),
             blit: crate::gpu::views::Blit::new(device, color_format),
+            pipelines: Pipelines::default(),
         }
     }
 
@@ -707,7 +715,7 @@ impl Scene {
         &self,
         device: &wgpu::Device,
         recipe: &Recipe,
-        (group, extra, fragment): (&wgpu::BindGroupLayout, &str, &str),
+        (group, extra, fragment): (&wgpu::BindGroupLayout, &str, &'static str),
     ) -> wgpu::RenderPipeline {
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some(&format!("{} pipeline layout", recipe.name)),
@@ -732,38 +740,17 @@ impl Scene {
         device: &wgpu::Device,
         recipe: &Recipe,
         layout: &wgpu::PipelineLayout,
-        (module, vertex, fragment): (&wgpu::ShaderModule, &str, &str),
+        (module, vertex, fragment): (&wgpu::ShaderModule, &'static str, &'static str),
     ) -> wgpu::RenderPipeline {
-        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(recipe.name),
-            layout: Some(layout),
-            vertex: wgpu::VertexState {
-                module,
-                entry_point: Some(vertex),
-                compilation_options: Default::default(),
-                buffers: &[Some(Vertex::LAYOUT)],
-            },
-            fragment: Some(wgpu::FragmentState {
-                module,
-                entry_point: Some(fragment),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: self.color_format,
-                    blend: recipe.blend,
-                    write_mask: recipe.color_writes,
-                })],
-            }),
-            primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleList,
-                front_face: recipe.front_face,
-                cull_mode: recipe.cull_mode,
-                ..Default::default()
-            },
-            depth_stencil: Some(recipe.depth_stencil()),
-            multisample: wgpu::MultisampleState::default(),
-            multiview_mask: None,
-            cache: None,
-        })
+        let stages = Stages {
+            layout: layout.clone(),
+            module: module.clone(),
+            vertex,
+            fragment,
+            buffers: &[Some(Vertex::LAYOUT)],
+            color_format: self.color_format,
+        };
+        self.pipelines.bake(device, recipe, &stages)
     }
 
     /// Writes this frame's camera and lights, and the reflected lights for mirror images.
@@ -819,20 +806,20 @@ impl Scene {
 
     /// Draws the room's solid objects — floor, wall, crate and skull, all but the mirror — with the
     /// pipeline already set. The mirror lessons start every frame with it.
-    pub fn draw_room(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn draw_room(&self, pass: &mut Pass<'_, '_>) {
         for object in [&self.floor, &self.wall, &self.crate_box, &self.skull] {
             object.draw(pass);
         }
     }
 
     /// Binds the frame's camera and lights (group 0).
-    pub fn bind_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn bind_frame(&self, pass: &mut Pass<'_, '_>) {
         self.frame.bind(pass);
     }
 
     /// Binds the camera with the lights reflected in the mirror (group 0), for mirror images: the
     /// reflected skull must be lit as the real one is, seen from behind the glass.
-    pub fn bind_reflected_frame(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn bind_reflected_frame(&self, pass: &mut Pass<'_, '_>) {
         self.reflected_frame.bind(pass);
     }
 }

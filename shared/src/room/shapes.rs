@@ -4,18 +4,22 @@
 use glam::Vec2;
 use wgpu::util::DeviceExt;
 
+use crate::gpu::pass::Pass;
+use crate::gpu::pipelines::Stages;
 use crate::gpu::states::Recipe;
 use crate::room::scene::Scene;
 
 /// A shape on the GPU.
 pub struct Shape {
+    /// What the shape is, e.g. `porthole` (a pixel's story names it).
+    pub name: &'static str,
     vertices: wgpu::Buffer,
     count: u32,
 }
 
 impl Shape {
     /// A disc around `centre` (screen units: the screen is 2 high) with `radius`.
-    pub fn disc(device: &wgpu::Device, name: &str, centre: Vec2, radius: f32) -> Self {
+    pub fn disc(device: &wgpu::Device, name: &'static str, centre: Vec2, radius: f32) -> Self {
         const SEGMENTS: usize = 96;
         let point = |i: usize| {
             let angle = i as f32 / SEGMENTS as f32 * std::f32::consts::TAU;
@@ -31,12 +35,14 @@ impl Shape {
             usage: wgpu::BufferUsages::VERTEX,
         });
         Self {
+            name,
             vertices,
             count: triangles.len() as u32,
         }
     }
 
-    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+    pub fn draw(&self, pass: &mut Pass<'_, '_>) {
+        pass.object(self.name);
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.draw(0..self.count, 0..1);
     }
@@ -53,38 +59,20 @@ pub fn pipeline(device: &wgpu::Device, scene: &Scene, recipe: &Recipe) -> wgpu::
         label: Some("shape.wgsl"),
         source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/shape.wgsl").into()),
     });
-    let attributes = wgpu::vertex_attr_array![0 => Float32x2];
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(recipe.name),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState {
-            module: &shader,
-            entry_point: Some("vs_shape"),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: 8,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &attributes,
-            })],
-        },
-        fragment: Some(wgpu::FragmentState {
-            module: &shader,
-            entry_point: Some("fs_shape"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: scene.color_format,
-                blend: recipe.blend,
-                write_mask: recipe.color_writes,
-            })],
-        }),
-        primitive: wgpu::PrimitiveState {
-            cull_mode: recipe.cull_mode,
-            front_face: recipe.front_face,
-            ..Default::default()
-        },
-        depth_stencil: Some(recipe.depth_stencil()),
-        multisample: wgpu::MultisampleState::default(),
-        multiview_mask: None,
-        cache: None,
-    })
+    let stages = Stages {
+        layout,
+        module: shader,
+        vertex: "vs_shape",
+        fragment: "fs_shape",
+        buffers: &[Some(wgpu::VertexBufferLayout {
+            array_stride: 8,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &ATTRIBUTES,
+        })],
+        color_format: scene.color_format,
+    };
+    scene.pipelines.bake(device, recipe, &stages)
 }
+
+/// A shape's vertex: its position on the screen.
+const ATTRIBUTES: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x2];

@@ -6,6 +6,7 @@ use glam::{Mat4, Vec4};
 
 use crate::Gpu;
 use crate::gpu::Offscreen;
+use crate::gpu::pass::Pass;
 use crate::gpu::states::Recipe;
 use crate::room::camera::View;
 use crate::room::scene::Scene;
@@ -68,12 +69,7 @@ impl TextureMirror {
     }
 
     /// Sets the surface's pipeline and binds `texture`'s colours (group 2); draw the surface next.
-    pub fn bind(
-        &self,
-        device: &wgpu::Device,
-        pass: &mut wgpu::RenderPass<'_>,
-        texture: &Offscreen,
-    ) {
+    pub fn bind(&self, device: &wgpu::Device, pass: &mut Pass<'_, '_>, texture: &Offscreen) {
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("texture mirror bind group"),
             layout: &self.layout,

@@ -16,6 +16,7 @@ mod heap;
 mod knobs;
 mod mark_mirror;
 mod panel;
+mod pixel;
 mod planar_shadow;
 mod reflect_skull;
 mod render_to_texture;
