@@ -55,6 +55,9 @@ pub fn problems(src: &Path) -> Vec<String> {
 fn catalogued(name: &str) -> bool {
     use crate::shots::{PAIRS, SHOTS};
     SHOTS.iter().any(|shot| shot.name == name)
+        || crate::stories::STORIES
+            .iter()
+            .any(|story| story.image_name() == name)
         || PAIRS
             .iter()
             .any(|pair| pair.zoom_name() == name || pair.difference_name() == name)

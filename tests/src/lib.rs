@@ -8,6 +8,7 @@ pub mod flip;
 pub mod geometry;
 pub mod pairs;
 pub mod shots;
+pub mod stories;
 pub mod strips;
 pub mod web;
 

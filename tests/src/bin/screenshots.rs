@@ -1,6 +1,6 @@
 //! `cargo screenshots [NAME...]`: renders the book's images into `book/src/images/` — the
 //! screenshots, the enlarged crop and difference image of each wrong/right pair, and each lesson's
-//! step strip, and the list of the screenshots with the arguments that make each (`shots.txt`). These files are also the tests' references, so run this only on purpose: when a
+//! step strip, its pixel stories (`--pixel`, with the pixel marked on the picture), and the list of the screenshots with the arguments that make each (`shots.txt`). These files are also the tests' references, so run this only on purpose: when a
 //! picture is meant to change, look at the new one, and say why in the commit.
 //!
 //! A NAME is a screenshot's name, or a lesson's (all of that lesson's images); none means all.
@@ -9,12 +9,17 @@ use std::process::ExitCode;
 
 use anyhow::Result;
 use workbook_tests::shots::{LESSONS, PAIRS, SHOTS};
+use workbook_tests::stories::STORIES;
 use workbook_tests::strips;
 
 fn main() -> ExitCode {
     workbook::app::cli::quiet_mesa();
     let names: Vec<String> = std::env::args().skip(1).collect();
-    let known = |name: &str| SHOTS.iter().any(|s| s.name == name) || LESSONS.contains(&name);
+    let known = |name: &str| {
+        SHOTS.iter().any(|s| s.name == name)
+            || STORIES.iter().any(|s| s.name == name)
+            || LESSONS.contains(&name)
+    };
     if let Some(unknown) = names.iter().find(|n| !known(n)) {
         let shots: Vec<_> = SHOTS.iter().map(|s| s.name).collect();
         eprintln!(
@@ -67,6 +72,11 @@ fn write(wanted: &dyn Fn(&str, &str) -> bool) -> Result<()> {
             made.rect,
             made.coverage * 100.0
         );
+    }
+    for story in STORIES.iter().filter(|s| wanted(s.name, s.lesson)) {
+        for path in story.write()? {
+            println!("wrote {}   ({})", path.display(), story.command());
+        }
     }
     for lesson in LESSONS.iter().filter(|l| wanted("", l)) {
         let files = strips::write(lesson)?;

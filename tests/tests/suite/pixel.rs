@@ -10,7 +10,8 @@ use workbook::lesson::story::{DrawStory, Outcome, Story, Verdict};
 use workbook::room::camera::{BOOK_POSE, FAR, NEAR};
 use workbook::room::scene::{CRATE_CENTRE, CRATE_SIZE, MIRROR_MAX, MIRROR_MIN, SKULL_CENTRE};
 use workbook_tests::geometry::{View, hit_box, hit_z0_rect};
-use workbook_tests::shots::{self, LESSONS};
+use workbook_tests::shots::{self, LESSONS, STRICT};
+use workbook_tests::stories::{STORIES, skeleton};
 
 /// The book's camera, at a size that keeps the stories quick.
 const VIEW: View = View::new(BOOK_POSE, 320, 180);
@@ -282,5 +283,33 @@ fn a_corridor_pixel_three_levels_deep_reaches_three() {
         );
         assert_eq!(mark.after.stencil, level, "{}", story.text());
         assert!(draw.passed, "{}", story.text());
+    }
+}
+
+/// The book's pixel stories are what the lessons tell today: the same steps, draws, fragments and
+/// verdicts (the measured colours and depths may differ by a driver's rounding), each consistent
+/// with the GPU, and the picture with the pixel marked matches by FLIP.
+#[test]
+fn the_book_s_pixel_stories_are_what_the_lessons_tell() {
+    for story in STORIES {
+        let (told, picture) = story.tell().unwrap();
+        assert_consistent(&told);
+        let path = story.text_path();
+        let committed = std::fs::read_to_string(&path).unwrap_or_else(|_| {
+            panic!(
+                "{} is missing: make it with `cargo screenshots {}`",
+                path.display(),
+                story.name
+            )
+        });
+        assert_eq!(
+            skeleton(&committed),
+            skeleton(&told.text()),
+            "{} tells another story now: look at it (`{}`) and run `cargo screenshots {}`",
+            path.display(),
+            story.command(),
+            story.name
+        );
+        shots::check_image(&story.image_name(), &picture, STRICT).unwrap();
     }
 }
