@@ -2,7 +2,8 @@
 # Pictures of every lesson's window with its side panel, as a learner sees it, for the book's
 # "Running the lessons" page: each lesson runs in a real window under Xvfb at 1280×720, and after
 # WAIT seconds (the panel's timings and its comparison with the book need a few frames) the screen
-# is captured with ImageMagick. Needs xvfb-run, xdotool and ImageMagick (`import`).
+# is captured with ImageMagick. Needs xvfb-run, xdotool and ImageMagick (`import`). For the lessons in
+# PICKS, a second picture has a pixel of the view right-clicked: the panel tells its story.
 #
 #   scripts/window-shots.sh [LESSON...]      (default: all eleven)
 set -euo pipefail
@@ -17,6 +18,8 @@ if [[ ${#lessons[@]} -eq 0 ]]; then
     lessons=(depth-test stencil-basics mark-mirror reflect-skull winding-fix transparent-mirror
              drawing-order floor-mirror render-to-texture planar-shadow two-mirrors)
 fi
+# The pixel right-clicked in LESSON-pixel.jpg, in the window's pixels.
+declare -A PICKS=([mark-mirror]="470 250")
 out=book/src/images/window
 mkdir -p "$out" /tmp/workbook-window-shots
 for lesson in "${lessons[@]}"; do
@@ -28,6 +31,13 @@ for lesson in "${lessons[@]}"; do
     fi
     sleep "${WAIT:-8}"
     import -window root -quality 92 "$out/$lesson.jpg"
+    if [[ -n "${PICKS[$lesson]:-}" ]]; then
+        read -r x y <<< "${PICKS[$lesson]}"
+        xdotool mousemove "$x" "$y" click 3
+        sleep "${WAIT:-8}"
+        import -window root -quality 92 "$out/$lesson-pixel.jpg"
+        echo "wrote $out/$lesson-pixel.jpg"
+    fi
     kill "$pid"; wait "$pid" 2>/dev/null || true
     echo "wrote $out/$lesson.jpg"
 done

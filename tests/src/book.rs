@@ -70,11 +70,13 @@ pub const WEB_PAGE_SHOT: (&str, &str) = (
 );
 
 /// The command that makes one of the book's images other than the screenshots: the windows'
-/// pictures (`images/window/<lesson>.jpg`, by `scripts/window-shots.sh`) and the web edition's page.
+/// pictures (`images/window/<lesson>.jpg`, and `<lesson>-pixel.jpg` with a pixel picked, by
+/// `scripts/window-shots.sh`) and the web edition's page.
 pub fn made_by_another_command(image: &str) -> Option<&'static str> {
     let window = image
         .strip_prefix("images/window/")
-        .and_then(|file| file.strip_suffix(".jpg"));
+        .and_then(|file| file.strip_suffix(".jpg"))
+        .map(|name| name.strip_suffix("-pixel").unwrap_or(name));
     if window.is_some_and(|lesson| crate::shots::LESSONS.contains(&lesson)) {
         return Some("scripts/window-shots.sh");
     }

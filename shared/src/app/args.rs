@@ -17,7 +17,7 @@ pub const MAX_SIZE: u32 = 16384;
 #[command(
     after_help = "Keys in the window: 1-9 cycle the knobs (Shift+digit goes back), [ and ] step \
                   back and forward through the frame, Tab cycles color/depth/stencil, drag to \
-                  orbit, wheel to zoom, C prints the camera pose, H hides or shows the side panel, Esc \
+                  orbit, wheel to zoom, right-click a pixel to tell its story in the panel, C prints the camera pose, H hides or shows the side panel, Esc \
                   quits."
 )]
 pub struct Args {

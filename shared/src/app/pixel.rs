@@ -161,7 +161,7 @@ fn story_unscoped<L: Lesson>(
         .enumerate()
         .map(|(index, name)| StepStory {
             name,
-            after: texel(&step_bytes, index),
+            after: reader.texel(&step_bytes, index),
             into_own_target: own_targets.get(index).copied().unwrap_or(false),
             draws: Vec::new(),
         })
@@ -220,7 +220,9 @@ fn read<L: Lesson>(
     }
     runner.gpu.queue.submit(buffers);
     let bytes = map(device, &readback)?;
-    Ok((0..runs.len()).map(|slot| texel(&bytes, slot)).collect())
+    Ok((0..runs.len())
+        .map(|slot| reader.texel(&bytes, slot))
+        .collect())
 }
 
 /// The most fragments of one draw a story reads at its pixel.
@@ -299,13 +301,24 @@ impl<'r, L: Lesson> Reader<'r, L> {
     }
 }
 
-/// The pixel read into `slot` of `bytes`.
-fn texel(bytes: &[u8], slot: usize) -> Texel {
-    let at = &bytes[slot * SLOT as usize..];
-    Texel {
-        color: [at[0], at[1], at[2], at[3]],
-        depth: f32::from_le_bytes([at[4], at[5], at[6], at[7]]),
-        stencil: at[8],
+impl<L: Lesson> Reader<'_, L> {
+    /// The pixel read into `slot` of `bytes`, its colour as red, green, blue, alpha (a window's
+    /// surface format may hold blue first).
+    fn texel(&self, bytes: &[u8], slot: usize) -> Texel {
+        let at = &bytes[slot * SLOT as usize..];
+        let blue_first = matches!(
+            self.color.format(),
+            wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
+        );
+        let color = match blue_first {
+            true => [at[2], at[1], at[0], at[3]],
+            false => [at[0], at[1], at[2], at[3]],
+        };
+        Texel {
+            color,
+            depth: f32::from_le_bytes([at[4], at[5], at[6], at[7]]),
+            stencil: at[8],
+        }
     }
 }
 

@@ -490,6 +490,14 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
                     state.drag_from =
                         (button_state == ElementState::Pressed).then_some(state.cursor);
                 }
+                // A right-click on the view picks the pixel whose story the panel tells.
+                WindowEvent::MouseInput {
+                    state: ElementState::Pressed,
+                    button: MouseButton::Right,
+                    ..
+                } if state.workbench.visible => {
+                    changed = state.workbench.pick((state.cursor.x, state.cursor.y));
+                }
                 WindowEvent::CursorMoved { position, .. } => {
                     state.cursor = position;
                     if let Some(from) = state.drag_from {

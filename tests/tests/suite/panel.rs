@@ -37,6 +37,7 @@ fn harness(
             book: &Book::NoMatch,
             show_difference: false,
             message: None,
+            picked: None,
         };
         asked.extend(panel::show(ui, &model));
     };
@@ -248,5 +249,52 @@ fn idle_frames_keep_the_panels_layout() {
         bench.workbench.layouts,
         before + 1,
         "a new knob must be laid out"
+    );
+}
+
+/// A right-click on the view picks a pixel: the panel tells its story, the one `--pixel` tells for
+/// the view's size and the same settings, and follows a knob changed in the panel.
+#[test]
+fn a_picked_pixel_s_story_is_the_one_pixel_tells() {
+    use mark_mirror::MarkMirror;
+    use workbook::app::args::Args;
+    use workbook::app::workbench::headless::HeadlessWorkbench;
+    use workbook_tests::stories::skeleton;
+
+    let args = Args::parse_for::<MarkMirror>(["mark-mirror", "--size", "960x360"]).unwrap();
+    let mut bench = HeadlessWorkbench::<MarkMirror>::new(&args).unwrap();
+    bench.frame().unwrap();
+    assert!(
+        !bench.workbench.pick((950.0, 100.0)),
+        "the panel is no pixel of the view"
+    );
+    let pixel = (250, 120);
+    assert!(
+        bench
+            .workbench
+            .pick((pixel.0 as f64 + 0.5, pixel.1 as f64 + 0.5))
+    );
+    bench.frame().unwrap();
+    let told = |bench: &HeadlessWorkbench<MarkMirror>| {
+        let story = bench
+            .workbench
+            .story()
+            .expect("a story once a pixel is picked");
+        story.as_ref().expect("a story told").text()
+    };
+    let (width, height) = bench.workbench.view_size();
+    let tell = |settings: &[&str]| {
+        let mut request = Request::new::<MarkMirror>(settings).unwrap();
+        (request.width, request.height) = (width, height);
+        let headless = Headless::<MarkMirror>::new(&request).unwrap();
+        headless.story(pixel, settings.join(" ")).unwrap().text()
+    };
+    assert_eq!(skeleton(&told(&bench)), skeleton(&tell(&[])));
+    let knobs = Knobs::from_settings(MarkMirror::KNOBS, &["mark-depth-test=off"]).unwrap();
+    workbook::app::workbench::set_knobs(&mut bench.runner, &mut bench.viewing, knobs).unwrap();
+    bench.frame().unwrap();
+    assert_eq!(
+        skeleton(&told(&bench)),
+        skeleton(&tell(&["mark-depth-test=off"]))
     );
 }

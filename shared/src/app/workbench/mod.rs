@@ -23,9 +23,10 @@ use crate::gpu::timing::LateTimer;
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
+use crate::lesson::story::Story;
 use crate::room::camera::{self, Camera};
 use crate::room::scene::SceneOptions;
-use panel::{Action, Book, Cost, Model};
+use panel::{Action, Book, Cost, Model, Picked};
 
 /// The frame time and rate are over the frames of the last this many seconds; fewer than three
 /// frames in it, and the window draws only on change.
@@ -44,6 +45,8 @@ pub struct Viewing {
 /// The three buffers of the view, painted to be seen, each an egui texture.
 struct Buffers {
     size: (u32, u32),
+    /// The colours' texture (a pixel's story is read through it).
+    color: wgpu::Texture,
     /// Colour, depth, stencil.
     views: [wgpu::TextureView; 3],
     /// The same, as egui samples them (sRGB-encoded values, not decoded).
@@ -85,8 +88,15 @@ pub struct Workbench<L: Lesson> {
     message: Option<String>,
     scene: SceneOptions,
     backend: Option<String>,
+    /// The pixel picked in the view (a right-click), and its story with what it was told for.
+    picked: Option<(u32, u32)>,
+    story: Option<(StoryFor, Result<Story, String>)>,
+    story_at: Instant,
     _lesson: std::marker::PhantomData<L>,
 }
+
+/// What a pixel's story depends on: the knobs, the camera, the view's size and the pixel.
+type StoryFor = (Knobs, Camera, (u32, u32), (u32, u32));
 
 /// What one frame of the workbench asks of whoever shows it.
 pub struct Drawn {
@@ -159,6 +169,9 @@ impl<L: Lesson> Workbench<L> {
             message: None,
             scene: args.scene(),
             backend: args.backend.clone(),
+            picked: None,
+            story: None,
+            story_at: Instant::now(),
             _lesson: std::marker::PhantomData,
         })
     }
@@ -174,6 +187,71 @@ impl<L: Lesson> Workbench<L> {
     }
 
     /// The egui context, for the window's input to feed.
+    /// Picks the view's pixel under `cursor` (in the window's pixels) for the panel to tell its
+    /// story; returns whether the cursor was over the view.
+    pub fn pick(&mut self, (x, y): (f64, f64)) -> bool {
+        let Some(laid_out) = &self.laid_out else {
+            return false;
+        };
+        let ppp = laid_out.pixels_per_point as f64;
+        let (left, top) = (
+            laid_out.view_rect.min.x as f64 * ppp,
+            laid_out.view_rect.min.y as f64 * ppp,
+        );
+        let (px, py) = ((x - left).floor(), (y - top).floor());
+        let (width, height) = self.buffers.size;
+        if px < 0.0 || py < 0.0 || px >= width as f64 || py >= height as f64 {
+            return false;
+        }
+        self.picked = Some((px as u32, py as u32));
+        true
+    }
+
+    /// Tells the picked pixel's story again where what it depends on changed: at once for a new
+    /// pixel, knobs or size, at most twice a second while the camera moves (a story records the
+    /// frame once per draw that reaches the pixel: a software GPU takes a good part of a second).
+    /// Before the frame is recorded: the story's frames draw into the view's buffers.
+    fn tell_story(&mut self, runner: &Runner<L>) {
+        let Some(pixel) = self.picked else {
+            self.story = None;
+            return;
+        };
+        let size = self.buffers.size;
+        let key: StoryFor = (runner.knobs.clone(), runner.camera, size, pixel);
+        let Some((told, _)) = &self.story else {
+            return self.tell(runner, key);
+        };
+        if *told == key {
+            return;
+        }
+        let moving_only = (&told.0, told.2, told.3) == (&key.0, key.2, key.3);
+        if !moving_only || self.story_at.elapsed().as_secs_f64() > PICTURES_EVERY_S {
+            self.tell(runner, key);
+        }
+    }
+
+    fn tell(&mut self, runner: &Runner<L>, key: StoryFor) {
+        let (_, _, size, pixel) = key;
+        // The runner draws at the view's size once the view has been drawn at it.
+        if runner.depth_stencil.size() != size {
+            return;
+        }
+        let settings = runner.knobs.changed();
+        let story = crate::app::pixel::story(runner, &self.buffers.color, pixel, settings);
+        self.story = Some((key, story.map_err(|error| format!("{error:#}"))));
+        self.story_at = Instant::now();
+    }
+
+    /// The picked pixel's story as the panel shows it, once told (or why it could not be).
+    pub fn story(&self) -> Option<&Result<Story, String>> {
+        self.story.as_ref().map(|(_, story)| story)
+    }
+
+    /// The size of the view beside the panel, in pixels.
+    pub fn view_size(&self) -> (u32, u32) {
+        self.buffers.size
+    }
+
     pub fn context(&self) -> &egui::Context {
         &self.ctx
     }
@@ -195,6 +273,7 @@ impl<L: Lesson> Workbench<L> {
             label: Some("workbench target"),
             ..Default::default()
         });
+        self.tell_story(runner);
         let steps = runner.steps();
         let step = viewing.stop.resolve(&steps).unwrap_or(steps.len());
         let setting = setting(runner, *viewing);
@@ -217,6 +296,14 @@ impl<L: Lesson> Workbench<L> {
             book: &self.book,
             show_difference: self.show_difference,
             message: self.message.as_deref(),
+            picked: self.picked.map(|pixel| Picked {
+                pixel,
+                story: match &self.story {
+                    Some((_, Ok(story))) => Ok(story),
+                    Some((_, Err(why))) => Err(why.as_str()),
+                    None => Err("telling its story…"),
+                },
+            }),
         };
         let difference = self
             .difference
@@ -243,6 +330,7 @@ impl<L: Lesson> Workbench<L> {
             }
         } else {
             let mut view_rect = egui::Rect::NOTHING;
+            let picked = self.picked;
             let ctx = self.ctx.clone();
             let output = ctx.run_ui(raw_input, |ui| {
                 actions = panel::show(ui, &model);
@@ -250,6 +338,20 @@ impl<L: Lesson> Workbench<L> {
                     pixel_rect(ui.available_rect_before_wrap(), ui.ctx().pixels_per_point());
                 let uv = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0));
                 let painter = ui.painter();
+                // The picked pixel, marked with a cross in the view.
+                if let Some((x, y)) = picked {
+                    let ppp = ui.ctx().pixels_per_point();
+                    let centre = view_rect.min + egui::vec2(x as f32 + 0.5, y as f32 + 0.5) / ppp;
+                    let stroke = egui::Stroke::new(2.0 / ppp, egui::Color32::from_rgb(255, 220, 0));
+                    for direction in [egui::vec2(1.0, 0.0), egui::vec2(0.0, 1.0)] {
+                        for sign in [-1.0, 1.0] {
+                            let (near, far) = (3.0 / ppp, 10.0 / ppp);
+                            let from = centre + direction * sign * near;
+                            let to = centre + direction * sign * far;
+                            painter.line_segment([from, to], stroke);
+                        }
+                    }
+                }
                 if let Some((id, picture)) = difference {
                     let fit = (view_rect.width() / picture.x).min(view_rect.height() / picture.y);
                     let rect = egui::Rect::from_center_size(view_rect.center(), picture * fit);
@@ -451,8 +553,14 @@ impl<L: Lesson> Workbench<L> {
         }
         // A pose the panel shows that is no longer the camera's: draw until it is.
         let stale_camera = self.shown_camera != Some(runner.camera);
+        // A story told for an older camera: draw until it is told again.
+        let stale_story = self.picked.is_some()
+            && self
+                .story
+                .as_ref()
+                .is_none_or(|(told, _)| told.1 != runner.camera || told.2 != self.buffers.size);
         Ok(Drawn {
-            again: changed || self.verdicts.is_some() || stale_camera,
+            again: changed || self.verdicts.is_some() || stale_camera || stale_story,
             repaint_now: output
                 .viewport_output
                 .values()
@@ -551,6 +659,10 @@ impl<L: Lesson> Workbench<L> {
                 };
             }
             Action::ShowDifference(shown) => self.show_difference = shown,
+            Action::Unpick => {
+                self.picked = None;
+                self.story = None;
+            }
             Action::Hide => self.visible = false,
         }
         Ok(())
@@ -694,6 +806,8 @@ struct Shown {
     show_difference: bool,
     difference_shown: bool,
     message: Option<String>,
+    /// The picked pixel and its story as told.
+    picked: Option<((u32, u32), String)>,
 }
 
 impl Shown {
@@ -712,6 +826,13 @@ impl Shown {
             show_difference: model.show_difference,
             difference_shown,
             message: model.message.map(str::to_string),
+            picked: model.picked.as_ref().map(|picked| {
+                let story = match picked.story {
+                    Ok(story) => story.text(),
+                    Err(why) => why.to_string(),
+                };
+                (picked.pixel, story)
+            }),
         }
     }
 }
@@ -790,13 +911,30 @@ impl Buffers {
                 view_formats: &[encoded],
             })
         };
+        let color = gpu.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("workbench colour"),
+            size: wgpu::Extent3d {
+                width: size.0,
+                height: size.1,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[encoded],
+        });
         let textures = [
-            texture("workbench colour"),
+            color.clone(),
             texture("workbench depth picture"),
             texture("workbench stencil picture"),
         ];
         Self {
             size,
+            color,
             views: textures
                 .each_ref()
                 .map(|t| t.create_view(&Default::default())),

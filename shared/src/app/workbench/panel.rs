@@ -6,6 +6,7 @@ use egui::{Align, Color32, Layout, RichText, TextureId, Ui};
 
 use crate::lesson::knobs::{Knob, Knobs};
 use crate::lesson::steps::Show;
+use crate::lesson::story::Story;
 use crate::room::camera::Camera;
 
 /// The panel's width in points (times `--ui-scale` in pixels): the view gets the rest.
@@ -27,7 +28,15 @@ pub enum Action {
     /// Turn to the settings of the book's screenshot number `index` of [`Model::book_shots`].
     BookShot(usize),
     ShowDifference(bool),
+    /// Stop following the picked pixel.
+    Unpick,
     Hide,
+}
+
+/// The pixel picked in the view (a right-click) and its story, or why it cannot be told.
+pub struct Picked<'a> {
+    pub pixel: (u32, u32),
+    pub story: Result<&'a Story, &'a str>,
 }
 
 /// What the book comparison has found for the current settings.
@@ -88,6 +97,8 @@ pub struct Model<'a> {
     pub show_difference: bool,
     /// The last thing the panel did that the user should read (a screenshot written, say).
     pub message: Option<&'a str>,
+    /// The pixel whose story the panel tells, if one is picked.
+    pub picked: Option<Picked<'a>>,
 }
 
 /// Draws the panel on the right of `ui`; returns what the user asked for.
@@ -115,6 +126,7 @@ pub fn show(ui: &mut Ui, model: &Model<'_>) -> Vec<Action> {
                 });
                 knobs(ui, model, &mut actions);
                 steps(ui, model, &mut actions);
+                pixel(ui, model, &mut actions);
                 cost(ui, model);
                 camera(ui, model, &mut actions);
                 book(ui, model, &mut actions);
@@ -218,6 +230,61 @@ fn steps(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
         if !model.can_show_depth {
             ui.label("This backend cannot read the depth buffer in a shader: no depth picture.");
         }
+    }
+}
+
+/// The picked pixel's story (`--pixel`): each step's values there, the steps that changed it
+/// highlighted, and every draw that reaches it with its tests written out.
+fn pixel(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
+    let Some(picked) = &model.picked else {
+        section(ui, "One pixel");
+        ui.label("Right-click the view to follow one pixel through the frame (as --pixel X,Y).");
+        return;
+    };
+    let (x, y) = picked.pixel;
+    section(ui, &format!("Pixel ({x}, {y})"));
+    if ui.small_button("Forget the pixel").clicked() {
+        actions.push(Action::Unpick);
+    }
+    let story = match picked.story {
+        Ok(story) => story,
+        Err(why) => {
+            ui.label(why);
+            return;
+        }
+    };
+    let mut before = None;
+    for (index, step) in story.steps.iter().enumerate() {
+        let after = step.after;
+        let changed = before.is_some_and(|b| b != after);
+        let line = format!(
+            "{}. {}: {} {:.4} {}",
+            index + 1,
+            step.name,
+            crate::lesson::story::hex(after.color),
+            after.depth,
+            after.stencil
+        );
+        let text = RichText::new(line).monospace().small();
+        ui.label(match changed {
+            true => text.strong().color(Color32::from_rgb(255, 210, 80)),
+            false => text,
+        });
+        for draw in &step.draws {
+            for (row, words) in draw.describe().into_iter().enumerate() {
+                let indent = if row == 0 { "  · " } else { "      " };
+                // The panel's monospace font has no arrow.
+                let words = words.replace('→', "->");
+                let text = RichText::new(format!("{indent}{words}"))
+                    .monospace()
+                    .small();
+                ui.label(match draw.fragments.is_empty() {
+                    true => text.weak(),
+                    false => text,
+                });
+            }
+        }
+        before = Some(after);
     }
 }
 
