@@ -6,7 +6,6 @@
 //! too, so that every draw goes through [`Pass::draw`] or [`Pass::draw_indexed`]. Without a probe it
 //! adds nothing but a branch.
 
-use std::collections::HashMap;
 use std::ops::Range;
 
 use crate::gpu::pipelines::{Pipelines, Twin};
@@ -125,15 +124,8 @@ impl<'p, 'e> Pass<'p, 'e> {
             raw.end_occlusion_query();
         };
         let (probing, twin_queries) = (probe.probing, probe.twin_queries);
-        let mut twin = |kind: Twin| {
-            let pipeline = probe.state.pipeline.clone()?;
-            let key = (pipeline.clone(), kind);
-            if !probe.twins.contains_key(&key) {
-                let twin = pipelines.twin(device, &pipeline, kind)?;
-                probe.twins.insert(key.clone(), twin);
-            }
-            Some(probe.twins[&key].clone())
-        };
+        let pipeline = probe.state.pipeline.clone();
+        let twin = |kind: Twin| pipelines.twin(device, pipeline.as_ref()?, kind);
         match probing {
             Probing::Watch => queried(raw, index as u32, !outside),
             Probing::Cover => {
@@ -205,7 +197,6 @@ pub struct Probe {
     /// The step being recorded (its index in the frame).
     pub(crate) step: usize,
     state: State,
-    twins: HashMap<(wgpu::RenderPipeline, Twin), wgpu::RenderPipeline>,
 }
 
 impl Probe {
@@ -225,7 +216,6 @@ impl Probe {
             twin_queries: draws as u32,
             step: 0,
             state: State::default(),
-            twins: HashMap::new(),
         }
     }
 

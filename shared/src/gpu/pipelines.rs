@@ -4,6 +4,7 @@
 //! but other tests and writes (see [`Twin`]), to read what each fragment brought before the real
 //! tests judged it.
 
+use std::collections::HashMap;
 use std::sync::Mutex;
 
 use crate::gpu::states::Recipe;
@@ -39,10 +40,13 @@ pub enum Twin {
     Select,
 }
 
-/// Every pipeline baked through [`Pipelines::bake`] since the lesson was last built.
+/// Every pipeline baked through [`Pipelines::bake`] since the lesson was last built, and the twins
+/// baked of them so far (a window tells a story again and again: a software GPU takes tens of
+/// milliseconds to bake one).
 #[derive(Default)]
 pub struct Pipelines {
     baked: Mutex<Vec<Baked>>,
+    twins: Mutex<HashMap<(wgpu::RenderPipeline, Twin), wgpu::RenderPipeline>>,
 }
 
 impl Pipelines {
@@ -77,6 +81,11 @@ impl Pipelines {
         pipeline: &wgpu::RenderPipeline,
         kind: Twin,
     ) -> Option<wgpu::RenderPipeline> {
+        let key = (pipeline.clone(), kind);
+        let twins = || self.twins.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some(twin) = twins().get(&key) {
+            return Some(twin.clone());
+        }
         let (recipe, stages) = {
             let baked = self.lock();
             let found = baked.iter().rev().find(|b| &b.pipeline == pipeline)?;
@@ -111,12 +120,15 @@ impl Pipelines {
             },
             ..recipe
         };
-        Some(create(device, "twin of a probed draw", &twin, &stages))
+        let twin = create(device, "twin of a probed draw", &twin, &stages);
+        twins().insert(key, twin.clone());
+        Some(twin)
     }
 
     /// Forgets every pipeline (before the lesson is built again for new knob values).
     pub fn forget(&self) {
         self.lock().clear();
+        self.twins.lock().unwrap_or_else(|p| p.into_inner()).clear();
     }
 
     fn lock(&self) -> std::sync::MutexGuard<'_, Vec<Baked>> {
