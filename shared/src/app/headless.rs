@@ -487,20 +487,26 @@ impl Readback {
 
     /// Waits for the copy and returns the rows without their padding.
     fn read(self, device: &wgpu::Device) -> Result<Vec<u8>> {
-        let slice = self.buffer.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |_| {});
-        device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .context("waiting for the GPU failed")?;
-        let mapped = slice
-            .get_mapped_range()
-            .context("reading back from the GPU failed")?;
+        let mapped = map(device, &self.buffer)?;
         let mut bytes = Vec::with_capacity((self.row_bytes * self.height) as usize);
         for row in mapped.chunks(self.padded_row_bytes as usize) {
             bytes.extend_from_slice(&row[..self.row_bytes as usize]);
         }
         Ok(bytes)
     }
+}
+
+/// Waits for the copies into `buffer` (made `MAP_READ`) and returns its bytes.
+pub(crate) fn map(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
+    let slice = buffer.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |_| {});
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .context("waiting for the GPU failed")?;
+    let mapped = slice
+        .get_mapped_range()
+        .context("reading back from the GPU failed")?;
+    Ok(mapped.to_vec())
 }
 
 /// Renders as the command line asks when it asks for no window: `--screenshot` (after `--frames`

@@ -7,8 +7,9 @@
 //! twin (what its fragment brought, and whether it covers the pixel at all). All runs go into one
 //! submission; [`crate::lesson::story`] writes out the tests with the numbers read back.
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 
+use crate::app::headless::map;
 use crate::app::runner::Runner;
 use crate::gpu::pass::{Probe, Probing};
 use crate::gpu::views::{DEPTH_COPY_FORMAT, STENCIL_VALUES_FORMAT};
@@ -335,17 +336,4 @@ fn buffer(device: &wgpu::Device, size: u64, usage: wgpu::BufferUsages) -> wgpu::
         usage,
         mapped_at_creation: false,
     })
-}
-
-/// Waits for `buffer`'s copies and returns its bytes.
-fn map(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
-    let slice = buffer.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .context("waiting for the GPU failed")?;
-    let mapped = slice
-        .get_mapped_range()
-        .context("reading back from the GPU failed")?;
-    Ok(mapped.to_vec())
 }

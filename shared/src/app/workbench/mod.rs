@@ -894,7 +894,8 @@ impl Buffers {
         // egui samples its textures as sRGB-encoded values: it gets views of the same texels
         // without the sRGB decoding (through an sRGB view the thumbnails came out too dark).
         let encoded = format.remove_srgb_suffix();
-        let texture = |label| {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        let texture = |label, usage| {
             gpu.device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
                 size: wgpu::Extent3d {
@@ -906,31 +907,16 @@ impl Buffers {
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,
                 format,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                    | wgpu::TextureUsages::TEXTURE_BINDING,
+                usage,
                 view_formats: &[encoded],
             })
         };
-        let color = gpu.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("workbench colour"),
-            size: wgpu::Extent3d {
-                width: size.0,
-                height: size.1,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                | wgpu::TextureUsages::TEXTURE_BINDING
-                | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[encoded],
-        });
+        // The colours are copied from too: a pixel's story reads them.
+        let color = texture("workbench colour", usage | wgpu::TextureUsages::COPY_SRC);
         let textures = [
             color.clone(),
-            texture("workbench depth picture"),
-            texture("workbench stencil picture"),
+            texture("workbench depth picture", usage),
+            texture("workbench stencil picture", usage),
         ];
         Self {
             size,
