@@ -6,6 +6,8 @@
 // workbook's WebAssembly module (built by `cargo web` into live/) starts the lesson in a canvas, on
 // WebGPU where the browser has it, else WebGL2, and the controls below the canvas are made from the
 // lesson's own data (its knobs, the frame's steps, the buffers): the module's `describe()`.
+// A click (not a drag) on the canvas picks a pixel: a cross marks it, and its story through the
+// frame, as `--pixel X,Y` tells it, is shown under the controls and told again after every change.
 //
 // `?backend=webgl2` (or `webgpu`) in the page's address picks the backend. The tests read the
 // canvas through `window.workbookLive` (see tests/src/web.rs).
@@ -40,6 +42,30 @@
     return module;
   }
 
+  // wgpu 30.0.1's WebGPU backend leaves `occlusionQuerySet` out of every render pass it begins
+  // (`begin_render_pass` in its src/backend/webgpu.rs), and a pixel's story asks each draw with an
+  // occlusion query whether it reaches the pixel and whether it passes. While a story is read
+  // (`live.probing`: nothing else is drawn then), every pass begun gets the occlusion query set
+  // made last, the story's. To go once wgpu passes the set on; `cargo web-test` tells stories.
+  function passOcclusionQueriesOn() {
+    if (typeof GPUDevice === "undefined" || GPUDevice.prototype.createQuerySet.workbook) return;
+    let latest = null;
+    const create = GPUDevice.prototype.createQuerySet;
+    GPUDevice.prototype.createQuerySet = function (descriptor) {
+      const set = create.call(this, descriptor);
+      if (descriptor && descriptor.type === "occlusion") latest = set;
+      return set;
+    };
+    GPUDevice.prototype.createQuerySet.workbook = true;
+    const begin = GPUCommandEncoder.prototype.beginRenderPass;
+    GPUCommandEncoder.prototype.beginRenderPass = function (descriptor) {
+      if (live.probing && latest && descriptor && !descriptor.occlusionQuerySet) {
+        descriptor.occlusionQuerySet = latest;
+      }
+      return begin.call(this, descriptor);
+    };
+  }
+
   function wanted_backend() {
     return new URLSearchParams(window.location.search).get("backend") || "any";
   }
@@ -51,14 +77,17 @@
     bar.replaceWith(status);
     const canvas = element("canvas", { width: WIDTH, height: HEIGHT, class: "live-canvas" });
     canvas.setAttribute("tabindex", "0");
+    const cross = element("div", { class: "live-cross", hidden: "" });
+    const view = element("div", { class: "live-view" }, [canvas, cross]);
     let page;
     try {
       const bindings = await loadModule();
-      container.prepend(canvas);
+      passOcclusionQueriesOn();
+      container.prepend(view);
       page = await bindings.start(canvas, lesson, root + "live/assets", wanted_backend());
       page.draw();
     } catch (error) {
-      canvas.remove();
+      view.remove();
       status.textContent =
         "This browser cannot run the lesson here (" + String(error.message || error) +
         "): the figures below show its pictures.";
@@ -70,11 +99,13 @@
     status.textContent =
       info.backend + " on " + ((await adapterName(info)) || "this browser's adapter") +
       " · first frame " + firstFrame.toFixed(2) + " s after Run";
-    const state = { page, dirty: false, firstFrame, controls: null };
+    // `telling`: the promise of a pixel's story being read; the lesson is busy until it is.
+    const state = { page, dirty: false, firstFrame, controls: null, telling: null, pixel: null };
     const redraw = () => {
       if (!state.dirty) {
         state.dirty = true;
-        requestAnimationFrame(() => {
+        requestAnimationFrame(function frame() {
+          if (state.telling) return void state.telling.then(() => requestAnimationFrame(frame));
           state.dirty = false;
           try {
             page.draw();
@@ -86,12 +117,22 @@
     };
     state.redraw = redraw;
     const controls = element("div", { class: "live-controls" });
-    container.append(controls);
-    const refresh = () => build(controls, page, status, redraw, refresh);
+    const story = element("div", { class: "live-story" }, [
+      element("p", { text: "Click a pixel of the picture to read its story through the frame." }),
+    ]);
+    container.append(controls, story);
+    state.story = story;
+    state.tell = () => tell(state, canvas, cross, story);
+    // A change waits while a story is read (the lesson is busy), then is made.
+    const whenFree = (work) => (state.telling ? state.telling.then(() => whenFree(work)) : work());
+    const refresh = () => {
+      build(controls, page, status, redraw, refresh, whenFree);
+      if (state.pixel) state.tell();
+    };
     state.controls = controls;
     state.refresh = refresh;
-    refresh();
-    orbitWithTheMouse(canvas, page, redraw, refresh);
+    build(controls, page, status, redraw, refresh, whenFree);
+    orbitWithTheMouse(canvas, state);
     // Last: the tests wait for this, and then find the page complete.
     live[lesson] = state;
   }
@@ -109,30 +150,42 @@
     }
   }
 
-  // Drag to orbit, wheel to zoom, as in the window.
-  function orbitWithTheMouse(canvas, page, redraw, refresh) {
+  // Drag to orbit, wheel to zoom, as in the window; a click that does not drag picks a pixel.
+  // While a pixel's story is read the lesson is busy: the mouse waits.
+  function orbitWithTheMouse(canvas, state) {
+    const { page } = state;
+    // The canvas may be drawn smaller than its pixels: move as if at full size.
+    const scale = () => canvas.width / canvas.getBoundingClientRect().width;
     let last = null;
+    let dragged = 0;
     canvas.addEventListener("pointerdown", (event) => {
+      if (state.telling) return;
       last = [event.clientX, event.clientY];
+      dragged = 0;
       canvas.setPointerCapture(event.pointerId);
     });
     canvas.addEventListener("pointermove", (event) => {
-      if (!last) return;
-      // The canvas may be drawn smaller than its pixels: move as if at full size.
-      const scale = canvas.width / canvas.getBoundingClientRect().width;
-      page.orbit((event.clientX - last[0]) * scale, (event.clientY - last[1]) * scale);
+      if (!last || state.telling) return;
+      const [dx, dy] = [event.clientX - last[0], event.clientY - last[1]];
+      dragged += Math.abs(dx) + Math.abs(dy);
+      page.orbit(dx * scale(), dy * scale());
       last = [event.clientX, event.clientY];
-      redraw();
+      state.redraw();
     });
     // When a drag ends the pose is rounded as `--camera` writes it, so that the command line
     // below draws exactly the picture on the canvas.
-    const stop = () => {
-      if (last) {
-        page.set_camera(JSON.parse(page.describe()).camera);
-        redraw();
-        refresh();
-      }
+    const stop = (event) => {
+      if (!last) return;
       last = null;
+      if (dragged < 3 && event.type === "pointerup") {
+        const box = canvas.getBoundingClientRect();
+        const x = Math.floor((event.clientX - box.left) * scale());
+        const y = Math.floor((event.clientY - box.top) * (canvas.height / box.height));
+        if (x >= 0 && y >= 0 && x < canvas.width && y < canvas.height) state.pixel = [x, y];
+      }
+      page.set_camera(JSON.parse(page.describe()).camera);
+      state.redraw();
+      state.refresh();
     };
     canvas.addEventListener("pointerup", stop);
     canvas.addEventListener("pointercancel", stop);
@@ -140,28 +193,70 @@
       "wheel",
       (event) => {
         event.preventDefault();
+        if (state.telling) return;
         page.zoom(-event.deltaY / 100);
         page.set_camera(JSON.parse(page.describe()).camera);
-        redraw();
-        refresh();
+        state.redraw();
+        state.refresh();
       },
       { passive: false },
     );
   }
 
+  // Reads the picked pixel's story (again: after every change) and shows it under the controls,
+  // the pixel marked with a cross. A story asked for while one is read waits for it.
+  function tell(state, canvas, cross, story) {
+    if (state.telling) {
+      state.again = true;
+      return state.telling;
+    }
+    const [x, y] = state.pixel;
+    cross.style.left = ((x + 0.5) / canvas.width) * 100 + "%";
+    cross.style.top = ((y + 0.5) / canvas.height) * 100 + "%";
+    cross.hidden = false;
+    live.probing = true;
+    state.telling = state.page.story(x, y).then(
+      (text) => {
+        const pre = element("pre", { class: "live-story-text", text });
+        story.replaceChildren(
+          element("p", {
+            text: "Pixel " + x + "," + y + " (click another, or drag to orbit). The same on your machine: add --pixel " + x + "," + y + " to the command line above.",
+          }),
+          pre,
+        );
+        return text;
+      },
+      (error) => {
+        story.replaceChildren(
+          element("p", { text: "No story for pixel " + x + "," + y + ": " + (error.message || error) }),
+        );
+        return "error: " + (error.message || error);
+      },
+    ).finally(() => {
+      live.probing = false;
+      state.telling = null;
+      if (state.again) {
+        state.again = false;
+        tell(state, canvas, cross, story);
+      }
+    });
+    return state.telling;
+  }
+
   // The controls, made again from the lesson's description after every change (a knob may change
   // the frame's steps).
-  function build(controls, page, status, redraw, refresh) {
+  function build(controls, page, status, redraw, refresh, whenFree) {
     const info = JSON.parse(page.describe());
-    const apply = (change) => {
-      try {
-        change();
-      } catch (error) {
-        status.textContent = "error: " + (error.message || error);
-      }
-      redraw();
-      refresh();
-    };
+    const apply = (change) =>
+      whenFree(() => {
+        try {
+          change();
+        } catch (error) {
+          status.textContent = "error: " + (error.message || error);
+        }
+        redraw();
+        refresh();
+      });
     const rows = [];
     for (const knob of info.knobs) {
       const select = element("select", { "data-knob": knob.name, title: knob.meaning });

@@ -63,11 +63,18 @@ fn catalogued(name: &str) -> bool {
             .any(|pair| pair.zoom_name() == name || pair.difference_name() == name)
 }
 
-/// The book's picture of the web edition, and the command that makes it.
-pub const WEB_PAGE_SHOT: (&str, &str) = (
-    "images/web/reflect-skull-page.png",
-    "cargo web-test --page-screenshot book/src/images/web/reflect-skull-page.png",
-);
+/// The book's pictures of the web edition, and the commands that make them: a lesson's page, and a
+/// pixel's story in a page.
+pub const WEB_PAGE_SHOTS: [(&str, &str); 2] = [
+    (
+        "images/web/reflect-skull-page.png",
+        "cargo web-test --page-screenshot book/src/images/web/reflect-skull-page.png",
+    ),
+    (
+        "images/web/mark-mirror-page-story.png",
+        "cargo web-test --story-screenshot book/src/images/web/mark-mirror-page-story.png",
+    ),
+];
 
 /// The command that makes one of the book's images other than the screenshots: the windows'
 /// pictures (`images/window/<lesson>.jpg`, and `<lesson>-pixel.jpg` with a pixel picked, by
@@ -80,7 +87,10 @@ pub fn made_by_another_command(image: &str) -> Option<&'static str> {
     if window.is_some_and(|lesson| crate::shots::LESSONS.contains(&lesson)) {
         return Some("scripts/window-shots.sh");
     }
-    (image == WEB_PAGE_SHOT.0).then_some(WEB_PAGE_SHOT.1)
+    WEB_PAGE_SHOTS
+        .iter()
+        .find(|(shot, _)| *shot == image)
+        .map(|(_, command)| *command)
 }
 
 fn markdown_files(dir: &Path) -> Vec<PathBuf> {

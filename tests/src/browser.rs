@@ -362,6 +362,54 @@ impl LivePage {
         ))
     }
 
+    /// Every knob back at its default, through the knobs' selects.
+    pub fn default_knobs(&self) -> Result<()> {
+        let description = self.evaluate(&format!("{}.page.describe()", self.state()))?;
+        let description: serde_json::Value =
+            serde_json::from_str(&description).context("the page's description is not JSON")?;
+        let knobs = description["knobs"].as_array().cloned().unwrap_or_default();
+        for knob in knobs {
+            if let (Some(name), Some(default)) = (knob["name"].as_str(), knob["default"].as_str()) {
+                self.set_knob(name, default)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Clicks pixel (`x`, `y`) of the canvas with the mouse, as a reader does, and returns what the
+    /// page then shows under its controls: the pixel's story, or why there is none.
+    pub fn click_pixel(&self, x: u32, y: u32) -> Result<String> {
+        let point = self.evaluate(&format!(
+            "(() => {{ const c = document.querySelector('div.live[data-lesson=\"{}\"] canvas');
+                 c.scrollIntoView({{ block: 'center' }});
+                 const r = c.getBoundingClientRect();
+                 return [r.left + ({x} + 0.5) * r.width / c.width,
+                         r.top + ({y} + 0.5) * r.height / c.height].join(','); }})()",
+            self.lesson
+        ))?;
+        let point: Vec<f64> = point.split(',').filter_map(|n| n.parse().ok()).collect();
+        let [x, y] = point[..] else {
+            bail!("{}: no canvas to click", self.lesson);
+        };
+        self.tab
+            .click_point(headless_chrome::browser::tab::point::Point { x, y })
+            .map_err(|e| anyhow!("cannot click the canvas: {e}"))?;
+        self.evaluate(&format!(
+            "new Promise((resolve) => {{
+                 const state = {};
+                 const t0 = performance.now();
+                 (function poll() {{
+                     const told = state.story.querySelector('pre');
+                     if (!state.telling && (told || state.story.textContent.startsWith('No story')))
+                         resolve(told ? told.textContent : state.story.textContent);
+                     else if (performance.now() - t0 > 60000) resolve('no story in 60 s');
+                     else setTimeout(poll, 20);
+                 }})();
+             }})",
+            self.state()
+        ))
+    }
+
     /// The status line (backend and adapter, or an error).
     pub fn status(&self) -> Result<String> {
         self.evaluate(&format!(

@@ -7,18 +7,21 @@
 //! (`workbook::app::web`). This crate only maps names to lessons and errors to JavaScript.
 #![cfg(target_arch = "wasm32")]
 
+use std::cell::RefCell;
 use std::future::Future;
 use std::pin::Pin;
+use std::rc::Rc;
 
 use lessons::{ForLesson, for_lesson};
 use wasm_bindgen::prelude::*;
 use workbook::Lesson;
 use workbook::app::web::{self, Backend, Page};
 
-/// A lesson running in a canvas.
+/// A lesson running in a canvas. Shared, because a pixel's story is awaited: its promise holds the
+/// lesson until the story is read, and the lesson is busy until then (the page waits for it).
 #[wasm_bindgen]
 pub struct LiveLesson {
-    page: Box<dyn Page>,
+    page: Rc<RefCell<Box<dyn Page>>>,
 }
 
 /// The names of every lesson this module runs, in the book's order.
@@ -54,63 +57,108 @@ pub async fn start(
     let starting =
         for_lesson(&lesson, Start(canvas, assets, Backend::parse(&backend))).map_err(error)?;
     let page = starting.await.map_err(error)?;
-    Ok(LiveLesson { page })
+    Ok(LiveLesson {
+        page: Rc::new(RefCell::new(page)),
+    })
 }
 
 #[wasm_bindgen]
 impl LiveLesson {
     /// The page's controls as JSON (see `workbook::app::web::Page::describe`).
-    pub fn describe(&self) -> String {
-        self.page.describe()
+    pub fn describe(&self) -> Result<String, JsError> {
+        self.with(|page| Ok(page.describe()))
     }
 
     /// Draws a frame.
-    pub fn draw(&mut self) -> Result<(), JsError> {
-        self.page.draw().map_err(error)
+    pub fn draw(&self) -> Result<(), JsError> {
+        self.with(|page| page.draw())
     }
 
     /// Draws a frame and returns the canvas as a `data:image/png` URL.
-    pub fn capture(&mut self) -> Result<String, JsError> {
-        self.page.capture().map_err(error)
+    pub fn capture(&self) -> Result<String, JsError> {
+        self.with(|page| page.capture())
     }
 
-    pub fn resize(&mut self, width: u32, height: u32) {
-        self.page.resize(width, height);
+    pub fn resize(&self, width: u32, height: u32) -> Result<(), JsError> {
+        self.with(|page| {
+            page.resize(width, height);
+            Ok(())
+        })
     }
 
-    pub fn orbit(&mut self, dx: f32, dy: f32) {
-        self.page.orbit(dx, dy);
+    pub fn orbit(&self, dx: f32, dy: f32) -> Result<(), JsError> {
+        self.with(|page| {
+            page.orbit(dx, dy);
+            Ok(())
+        })
     }
 
-    pub fn zoom(&mut self, steps: f32) {
-        self.page.zoom(steps);
+    pub fn zoom(&self, steps: f32) -> Result<(), JsError> {
+        self.with(|page| {
+            page.zoom(steps);
+            Ok(())
+        })
     }
 
-    pub fn set_camera(&mut self, pose: &str) -> Result<(), JsError> {
-        self.page.set_camera(pose).map_err(error)
+    pub fn set_camera(&self, pose: &str) -> Result<(), JsError> {
+        self.with(|page| page.set_camera(pose))
     }
 
-    pub fn reset_camera(&mut self) {
-        self.page.reset_camera();
+    pub fn reset_camera(&self) -> Result<(), JsError> {
+        self.with(|page| {
+            page.reset_camera();
+            Ok(())
+        })
     }
 
-    pub fn set_knob(&mut self, name: &str, value: &str) -> Result<(), JsError> {
-        self.page.set_knob(name, value).map_err(error)
+    pub fn set_knob(&self, name: &str, value: &str) -> Result<(), JsError> {
+        self.with(|page| page.set_knob(name, value))
     }
 
     /// Stops the frame after step `step` (from 1); 0 draws it whole.
-    pub fn set_step(&mut self, step: usize) -> Result<(), JsError> {
-        self.page.set_step(step).map_err(error)
+    pub fn set_step(&self, step: usize) -> Result<(), JsError> {
+        self.with(|page| page.set_step(step))
     }
 
-    pub fn set_show(&mut self, buffer: &str) -> Result<(), JsError> {
-        self.page.set_show(buffer).map_err(error)
+    pub fn set_show(&self, buffer: &str) -> Result<(), JsError> {
+        self.with(|page| page.set_show(buffer))
     }
 
     /// The native command that draws the canvas's picture.
-    pub fn command_line(&self) -> String {
-        self.page.command_line()
+    pub fn command_line(&self) -> Result<String, JsError> {
+        self.with(|page| Ok(page.command_line()))
     }
+
+    /// The story of the canvas's pixel (`x`, `y`) through the whole frame, as `--pixel X,Y` tells
+    /// it (a promise of its text).
+    #[allow(
+        clippy::await_holding_refcell_ref,
+        reason = "the story holds the lesson until it is read: every other call in between is told \
+                  that the lesson is busy (`with`), none panics"
+    )]
+    pub fn story(&self, x: u32, y: u32) -> js_sys::Promise {
+        let page = self.page.clone();
+        wasm_bindgen_futures::future_to_promise(async move {
+            let mut page = page.try_borrow_mut().map_err(|_| busy())?;
+            match page.story(x, y).await {
+                Ok(text) => Ok(JsValue::from(text)),
+                Err(failure) => Err(error(failure).into()),
+            }
+        })
+    }
+}
+
+impl LiveLesson {
+    /// Runs `work` on the lesson, unless a pixel's story holds it.
+    fn with<T>(&self, work: impl FnOnce(&mut dyn Page) -> anyhow::Result<T>) -> Result<T, JsError> {
+        let mut page = self.page.try_borrow_mut().map_err(|_| busy())?;
+        work(page.as_mut()).map_err(error)
+    }
+}
+
+/// What a call made while a pixel's story is read gets.
+fn busy() -> JsError {
+    JsError::new("the lesson is busy telling a pixel's story: wait for it")
 }
 
 /// An error as JavaScript sees it: one line, its causes after colons.

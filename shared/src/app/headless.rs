@@ -12,6 +12,7 @@ use crate::gpu::views::DEPTH_COPY_FORMAT;
 use crate::gpu::{Gpu, HEADLESS_FORMAT, Offscreen};
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{self, Show, Stop};
+use crate::lesson::story::Story;
 use crate::lesson::{Lesson, Passes};
 use crate::room::camera::Camera;
 use crate::room::scene::SceneOptions;
@@ -262,11 +263,7 @@ impl<L: Lesson> Headless<L> {
 
     /// The story of one pixel through the frame: every step's and every draw's values there, read
     /// back from the GPU (see [`crate::app::pixel`]). `settings` heads the story.
-    pub fn story(
-        &self,
-        pixel: (u32, u32),
-        settings: String,
-    ) -> Result<crate::lesson::story::Story> {
+    pub fn story(&self, pixel: (u32, u32), settings: String) -> Result<Story> {
         crate::app::pixel::story(&self.runner, &self.color, pixel, settings)
     }
 
@@ -498,15 +495,7 @@ impl Readback {
 
 /// Waits for the copies into `buffer` (made `MAP_READ`) and returns its bytes.
 pub(crate) fn map(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
-    let slice = buffer.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .context("waiting for the GPU failed")?;
-    let mapped = slice
-        .get_mapped_range()
-        .context("reading back from the GPU failed")?;
-    Ok(mapped.to_vec())
+    pollster::block_on(crate::gpu::readback::read_buffer(device, buffer))
 }
 
 /// Renders as the command line asks when it asks for no window: `--screenshot` (after `--frames`
@@ -558,14 +547,8 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
         }
     }
     if let Some(pixel) = args.pixel {
-        let mut settings = Vec::new();
-        if !request.knobs.changed().is_empty() {
-            settings.push(request.knobs.changed());
-        }
-        if request.camera != L::CAMERA {
-            settings.push(format!("camera {}", request.camera));
-        }
-        let story = headless.story(pixel, settings.join(", "))?;
+        let settings = Story::settings(&request.knobs, request.camera, L::CAMERA);
+        let story = headless.story(pixel, settings)?;
         print!("{}", story.text());
         if args.verbose {
             eprintln!("told the pixel's story in {:.0?}", start.elapsed());

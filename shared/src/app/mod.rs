@@ -7,9 +7,6 @@ pub mod args;
 pub mod cli;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
-/// A pixel's story is read with blocking readbacks: native only for now (the page would map its
-/// buffers asynchronously).
-#[cfg(not(target_arch = "wasm32"))]
 pub mod pixel;
 pub mod runner;
 pub mod testing;

@@ -1,4 +1,5 @@
-//! `--pixel X,Y`: one pixel's story, read from the GPU.
+//! One pixel's story, read from the GPU: `--pixel X,Y`, a right-click in the window, a click on the
+//! book page's canvas.
 //!
 //! The frame is recorded again and again with a [`Probe`] on the pixel, every pass kept to it by a
 //! 1×1 scissor (so each run costs little more than its vertices): once as the lesson draws it, the
@@ -6,12 +7,15 @@
 //! each draw, once up to and with that draw (the pixel after it), and once with that draw as its
 //! twin (what its fragment brought, and whether it covers the pixel at all). All runs go into one
 //! submission; [`crate::lesson::story`] writes out the tests with the numbers read back.
+//!
+//! The story is read in three rounds (each needs the numbers of the one before), each waiting for
+//! its readback: natively by blocking ([`story`]), in the page by awaiting ([`tell`]).
 
 use anyhow::{Result, bail};
 
-use crate::app::headless::map;
 use crate::app::runner::Runner;
 use crate::gpu::pass::{Probe, Probing};
+use crate::gpu::readback::read_buffer;
 use crate::gpu::views::{DEPTH_COPY_FORMAT, STENCIL_VALUES_FORMAT};
 use crate::lesson::Lesson;
 use crate::lesson::story::{DrawStory, Fragment, StepStory, Story, Texel};
@@ -20,8 +24,23 @@ use crate::lesson::story::{DrawStory, Fragment, StepStory, Story, Texel};
 /// at 8.
 const SLOT: u64 = 256;
 
-/// The story of `pixel` in the frame `runner` draws into `color` (a texture of the frame's size).
+/// The story of `pixel` in the frame `runner` draws into `color` (a texture of the frame's size),
+/// waiting for the GPU; every wgpu error in it fails it.
+#[cfg(not(target_arch = "wasm32"))]
 pub fn story<L: Lesson>(
+    runner: &Runner<L>,
+    color: &wgpu::Texture,
+    pixel: (u32, u32),
+    settings: String,
+) -> Result<Story> {
+    runner
+        .gpu
+        .scoped(|| pollster::block_on(tell(runner, color, pixel, settings)))
+}
+
+/// The story of `pixel` in the frame `runner` draws into `color` (a texture of the frame's size),
+/// awaiting each readback.
+pub async fn tell<L: Lesson>(
     runner: &Runner<L>,
     color: &wgpu::Texture,
     pixel: (u32, u32),
@@ -38,20 +57,10 @@ pub fn story<L: Lesson>(
     }
     if !runner.can_show(crate::lesson::steps::Show::Depth) {
         bail!(
-            "a pixel's story reads the depth buffer in a shader, which this backend cannot; use Vulkan"
+            "a pixel's story reads the depth buffer in a shader, which the GL backends (GL, WebGL2) \
+             cannot: use Vulkan, Metal, DirectX 12 or WebGPU"
         );
     }
-    runner
-        .gpu
-        .scoped(|| story_unscoped(runner, color, pixel, settings))
-}
-
-fn story_unscoped<L: Lesson>(
-    runner: &Runner<L>,
-    color: &wgpu::Texture,
-    pixel: (u32, u32),
-    settings: String,
-) -> Result<Story> {
     let (gpu, device) = (&runner.gpu, &runner.gpu.device);
     let color_view = color.create_view(&Default::default());
     let reader = Reader::new(runner, color, pixel);
@@ -110,8 +119,8 @@ fn story_unscoped<L: Lesson>(
     }
     // Each recording ends its passes before the next begins: one submission keeps their order.
     gpu.queue.submit([watched.finish(), covered.finish()]);
-    let step_bytes = map(device, &step_readback)?;
-    let counts: Vec<u64> = bytemuck::pod_collect_to_vec(&map(device, &counts)?);
+    let step_bytes = read_buffer(device, &step_readback).await?;
+    let counts: Vec<u64> = bytemuck::pod_collect_to_vec(&read_buffer(device, &counts).await?);
     let (passed, covers) = counts.split_at(draw_count);
 
     // 2. Each draw that reaches the pixel: the frame up to and with it (the pixel after it), and
@@ -121,7 +130,7 @@ fn story_unscoped<L: Lesson>(
         .iter()
         .flat_map(|&k| [Probing::Until(k), Probing::Twin(k, 0)])
         .collect();
-    let first = read(runner, &reader, &mut probe, &color_view, &runs)?;
+    let first = read(runner, &reader, &mut probe, &color_view, &runs).await?;
     // 3. The other fragments of draws whose triangles overlap at the pixel.
     let more: Vec<Probing> = reaching
         .iter()
@@ -131,7 +140,7 @@ fn story_unscoped<L: Lesson>(
             (1..count).map(move |fragment| Probing::Twin(k, fragment))
         })
         .collect();
-    let others = read(runner, &reader, &mut probe, &color_view, &more)?;
+    let others = read(runner, &reader, &mut probe, &color_view, &more).await?;
     runs.extend(more);
     let read: Vec<Texel> = first.into_iter().chain(others).collect();
     let fragments = |k: usize| -> Vec<Fragment> {
@@ -200,7 +209,7 @@ fn story_unscoped<L: Lesson>(
 
 /// Records the frame once per entry of `runs`, probed as it says, reads the pixel after each run,
 /// and returns what was read, in order.
-fn read<L: Lesson>(
+async fn read<L: Lesson>(
     runner: &Runner<L>,
     reader: &Reader<'_, L>,
     probe: &mut Probe,
@@ -220,7 +229,7 @@ fn read<L: Lesson>(
         buffers.push(encoder.finish());
     }
     runner.gpu.queue.submit(buffers);
-    let bytes = map(device, &readback)?;
+    let bytes = read_buffer(device, &readback).await?;
     Ok((0..runs.len())
         .map(|slot| reader.texel(&bytes, slot))
         .collect())

@@ -5,10 +5,11 @@
 //! The page drives it: it asks for a frame on every animation frame, passes the mouse on (drag to
 //! orbit, wheel to zoom) and builds its controls from [`Page::describe`] — a select per knob, the
 //! frame's steps, the buffer shown — and shows [`Page::command_line`], the native command that draws
-//! the same picture. The bindings the page's script calls are the `web` crate's (`book/web`), which
+//! the same picture. A click on the canvas asks for that pixel's story ([`Page::story`]). The bindings the page's script calls are the `web` crate's (`book/web`), which
 //! maps a lesson's name to its type and calls [`start`].
 
 use std::fmt::Write as _;
+use std::pin::Pin;
 use std::sync::Arc;
 
 use anyhow::{Context, Result, anyhow, bail};
@@ -21,6 +22,7 @@ use crate::gpu::Gpu;
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
+use crate::lesson::story::Story;
 use crate::room::assets::{Assets, MODEL_FILE, TEXTURE_FILES};
 use crate::room::camera::Camera;
 use crate::room::scene::{DEFAULT_ANISOTROPY, Scene};
@@ -83,6 +85,9 @@ pub trait Page {
     fn set_show(&mut self, name: &str) -> Result<()>;
     /// The command that draws the canvas's picture natively: `cargo run -p … -- --size … --set …`.
     fn command_line(&self) -> String;
+    /// The story of the canvas's pixel (`x`, `y`) through the whole frame, as `--pixel X,Y` tells
+    /// it: read back from the GPU, so it is awaited.
+    fn story(&mut self, x: u32, y: u32) -> Pin<Box<dyn Future<Output = Result<String>> + '_>>;
 }
 
 /// A lesson in a canvas.
@@ -455,6 +460,24 @@ impl<L: Lesson> Page for Live<L> {
         let mut arguments = vec!["--size".to_string(), format!("{width}x{height}")];
         arguments.extend(self.setting().arguments::<L>());
         format!("cargo run -p {} -- {}", L::NAME, arguments.join(" "))
+    }
+
+    fn story(&mut self, x: u32, y: u32) -> Pin<Box<dyn Future<Output = Result<String>> + '_>> {
+        Box::pin(async move {
+            let size = (self.config.width, self.config.height);
+            self.runner.resize(size.0, size.1);
+            let color = crate::gpu::target_texture(
+                &self.runner.gpu.device,
+                "a pixel's story: the frame",
+                self.view_format,
+                size,
+                wgpu::TextureUsages::COPY_SRC,
+            );
+            let settings = Story::settings(&self.runner.knobs, self.runner.camera, L::CAMERA);
+            let story = crate::app::pixel::tell(&self.runner, &color, (x, y), settings).await;
+            self.runner.gpu.check_errors()?;
+            Ok(story?.text())
+        })
     }
 }
 

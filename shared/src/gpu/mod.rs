@@ -1,10 +1,12 @@
 //! The GPU: setup of instance, adapter and device (honouring `WGPU_BACKEND` and `--backend`), the
 //! capture of every wgpu error, and the render targets the framework owns; the named pipeline
 //! recipes ([`states`]), the pipelines baked from them ([`pipelines`]), the pass a step draws with
-//! ([`pass`]) and the pictures of the depth and stencil buffers ([`views`]).
+//! ([`pass`]) the pictures of the depth and stencil buffers ([`views`]) and reading
+//! buffers back ([`readback`]).
 
 pub mod pass;
 pub mod pipelines;
+pub mod readback;
 pub mod states;
 pub mod timing;
 pub mod views;

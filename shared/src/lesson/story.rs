@@ -13,7 +13,9 @@ use wgpu::{BlendFactor, BlendOperation, CompareFunction, StencilOperation};
 
 use crate::gpu::srgb_to_linear;
 use crate::gpu::states::Recipe;
+use crate::lesson::knobs::Knobs;
 use crate::math::stencil;
+use crate::room::camera::Camera;
 
 /// A pixel's three values, as the buffers hold them.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -341,6 +343,19 @@ impl DrawStory {
 }
 
 impl Story {
+    /// What a story's header says it was told with: the knobs changed from their defaults, and the
+    /// camera where it is not the lesson's own (`lesson_camera`), as `--pixel` and the page tell it.
+    pub fn settings(knobs: &Knobs, camera: Camera, lesson_camera: Camera) -> String {
+        let mut settings = Vec::new();
+        if !knobs.changed().is_empty() {
+            settings.push(knobs.changed());
+        }
+        if camera != lesson_camera {
+            settings.push(format!("camera {camera}"));
+        }
+        settings.join(", ")
+    }
+
     /// The story as text: a header, then each step with its draws and the pixel after it.
     pub fn text(&self) -> String {
         let (x, y) = self.pixel;

@@ -11,7 +11,10 @@
 //! - every wrong picture of the book, set up through the page, fails against its right one, so a
 //!   lesson broken that way in the browser would not pass;
 //! - a setting the backend cannot draw is offered disabled, with its reason (the depth buffer on
-//!   WebGL2), and is counted, not failed.
+//!   WebGL2), and is counted, not failed;
+//! - a click on the canvas tells the pixel's story: for each of the book's stories, the pixel
+//!   clicked on WebGPU tells the story `--pixel` tells natively (the same steps, draws and test
+//!   outcomes; the measured colours and depths left out), and on WebGL2 the page says why not.
 //!
 //! Failures write `-actual` and `-difference` PNGs into `target/web-test/`. The figures of every
 //! comparison go to `target/web-test/report.csv`.
@@ -25,6 +28,7 @@ use workbook::book::shots::{self as book_shots, BookShot, Setting};
 use workbook_tests::browser::{self, LivePage, WebBackend, WebBrowser};
 use workbook_tests::flip::{self, Comparison, Threshold};
 use workbook_tests::shots::{ForLesson, LESSONS, PAIRS, for_lesson};
+use workbook_tests::stories::{self, BookStory, STORIES};
 use workbook_tests::workspace;
 
 /// The limit a page's picture must meet against the book's. The book's pictures are drawn by
@@ -92,6 +96,10 @@ fn run() -> Result<bool> {
         let path = only.get(1).context("--page-screenshot FILE")?;
         return page_screenshot(&site, Path::new(path)).map(|()| true);
     }
+    if only.first().map(String::as_str) == Some("--story-screenshot") {
+        let path = only.get(1).context("--story-screenshot FILE")?;
+        return story_screenshot(&site, Path::new(path)).map(|()| true);
+    }
     only.retain(|name| !name.starts_with("--"));
     for backend in WebBackend::BOTH {
         let browser = WebBrowser::launch(backend)?;
@@ -128,6 +136,18 @@ fn page_screenshot(site: &str, path: &Path) -> Result<()> {
     page.set_knob("stencil", "off")?;
     page.set_camera("140,12,10")?;
     page.capture()?;
+    let png = page.screenshot(true)?;
+    std::fs::write(path, png).with_context(|| format!("cannot write {}", path.display()))?;
+    println!("web-test: wrote {}", path.display());
+    Ok(())
+}
+
+/// The book's picture of a pixel's story in the page (`cargo web-test --story-screenshot FILE`):
+/// lesson 3's page on WebGPU, a pixel of the mirror clicked (the book's story pixel).
+fn story_screenshot(site: &str, path: &Path) -> Result<()> {
+    let browser = WebBrowser::launch(WebBackend::WebGpu)?;
+    let page = browser.open(site, "mark-mirror")?;
+    page.click_pixel(400, 150)?;
     let png = page.screenshot(true)?;
     std::fs::write(path, png).with_context(|| format!("cannot write {}", path.display()))?;
     println!("web-test: wrote {}", path.display());
@@ -230,6 +250,9 @@ fn test_lesson(
             }
         }
     }
+    for story in STORIES.iter().filter(|story| story.lesson == lesson) {
+        check_story(&page, story, backend)?;
+    }
     println!(
         "  {:7} {lesson}: first frame {:.2} s after Run",
         backend.name(),
@@ -240,6 +263,80 @@ fn test_lesson(
         "{},{lesson},first-frame-seconds,{:.3},,",
         backend.name(),
         page.first_frame
+    );
+    Ok(())
+}
+
+/// A click on the canvas at the book's story pixel (scaled to the canvas) tells that pixel's story:
+/// on WebGPU the story `--pixel` tells natively with the page's settings, measured numbers left
+/// out; on WebGL2, which cannot read the depth buffer in a shader, the page says why there is none.
+fn check_story(page: &LivePage, story: &BookStory, backend: WebBackend) -> Result<()> {
+    page.default_knobs()?;
+    for setting in story.settings {
+        let (name, value) = setting
+            .split_once('=')
+            .context("a story's setting is name=value")?;
+        page.set_knob(name, value)?;
+    }
+    page.set_step(0)?;
+    page.set_show("color")?;
+    page.reset_camera()?;
+    let (width, height) = stories::SIZE;
+    let (x, y) = (story.pixel.0 * 800 / width, story.pixel.1 * 450 / height);
+    let told = page.click_pixel(x, y)?;
+    if backend == WebBackend::WebGl2 {
+        if !(told.starts_with("No story") && told.contains("WebGPU")) {
+            bail!("{}: on WebGL2 the page told `{told}`", story.name);
+        }
+        println!(
+            "  {:7} {:40} no story on WebGL2, as the page says",
+            backend.name(),
+            story.name
+        );
+        return Ok(());
+    }
+    // The page's header names the pixel it picked (a click lands within a pixel of where it aimed).
+    let picked = told
+        .strip_prefix("Pixel (")
+        .and_then(|rest| rest.split_once(')'))
+        .and_then(|(pixel, _)| pixel.split_once(", "))
+        .and_then(|(a, b)| Some((a.parse::<u32>().ok()?, b.parse::<u32>().ok()?)));
+    let Some((px, py)) = picked else {
+        bail!("{}: the page told no story: `{told}`", story.name);
+    };
+    if px.abs_diff(x) > 1 || py.abs_diff(y) > 1 {
+        bail!(
+            "{}: the click at {x},{y} picked pixel {px},{py}",
+            story.name
+        );
+    }
+    let line = page.command_line()?;
+    let arguments: Vec<&str> = line.split_whitespace().skip(5).collect();
+    let binary = workspace().join("target/debug").join(story.lesson);
+    let output = std::process::Command::new(&binary)
+        .args(&arguments)
+        .arg("--pixel")
+        .arg(format!("{px},{py}"))
+        .output()
+        .with_context(|| format!("cannot run {}", binary.display()))?;
+    if !output.status.success() {
+        bail!(
+            "`{line} --pixel {px},{py}` run natively failed: {}",
+            String::from_utf8_lossy(&output.stderr).trim()
+        );
+    }
+    let native = String::from_utf8_lossy(&output.stdout);
+    if stories::skeleton(&told) != stories::skeleton(&native) {
+        bail!(
+            "{}: the page's story of pixel {px},{py} is not the native one:\n--- page\n{told}\n--- native\n{native}",
+            story.name
+        );
+    }
+    println!(
+        "  {:7} {:40} the click's story is --pixel's ({} lines)",
+        backend.name(),
+        story.name,
+        told.lines().count()
     );
     Ok(())
 }
