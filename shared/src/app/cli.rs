@@ -99,10 +99,10 @@ pub fn quiet_mesa() {
 /// Logs go to stderr; `RUST_LOG` picks the level. By default there are none: every failure the
 /// lesson knows of becomes its one line, and wgpu's own (the Vulkan loader's complaints on a machine
 /// without a driver, the EGL probe's without GL) would only bury it. `-v` shows wgpu's errors and
-/// warnings.
+/// warnings, and how long each phase of the start-up took.
 fn init_logging(verbose: bool) {
     let default = match verbose {
-        true => "warn,wgpu_hal::gles::egl=off",
+        true => "warn,start-up=info,wgpu_hal::gles::egl=off",
         false => "off",
     };
     let _ = env_logger::Builder::from_env(env_logger::Env::default().default_filter_or(default))

@@ -49,7 +49,9 @@ impl<L: Lesson> Runner<L> {
         camera: Camera,
         (width, height): (u32, u32),
     ) -> Result<Self> {
+        let start = std::time::Instant::now();
         let lesson = L::new(&gpu, &scene, &knobs)?;
+        log::info!(target: crate::gpu::STARTUP, "lesson built in {:.0?}", start.elapsed());
         let depth_stencil = DepthStencil::new(&gpu.device, width, height);
         let depth_bind_group = depth_bind_group(&gpu, &scene, &depth_stencil);
         gpu.check_errors()?;

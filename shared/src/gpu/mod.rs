@@ -15,6 +15,9 @@ use std::sync::{Arc, Mutex};
 
 use anyhow::{Context, Result, bail};
 
+/// The log target of the start-up's phases (`-v` prints them).
+pub const STARTUP: &str = "start-up";
+
 /// The depth-stencil format of every lesson: 24 bits of depth and 8 bits of stencil, D3D's D24S8.
 pub const DEPTH_STENCIL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth24PlusStencil8;
 
@@ -157,6 +160,7 @@ impl Gpu {
     /// A device for headless work: no window, no surface.
     #[cfg(not(target_arch = "wasm32"))]
     pub fn headless(backend: Option<&str>, verbose: bool) -> Result<Self> {
+        let start = std::time::Instant::now();
         let mut result = Err(anyhow::anyhow!("no backend to try"));
         for backends in backend_choices(backend)? {
             result = Self::new(instance(backends, None), backends, None, verbose);
@@ -164,6 +168,7 @@ impl Gpu {
                 break;
             }
         }
+        log::info!(target: STARTUP, "GPU opened in {:.0?}", start.elapsed());
         result
     }
 

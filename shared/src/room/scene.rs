@@ -476,13 +476,17 @@ impl Scene {
         color_format: wgpu::TextureFormat,
         options: &SceneOptions,
     ) -> anyhow::Result<Self> {
+        let start = std::time::Instant::now();
         let assets = Assets::load(&options.assets, options.model.as_deref())?;
-        Ok(Self::with_assets(
-            gpu,
-            color_format,
-            &assets,
-            options.anisotropy,
-        ))
+        let read = start.elapsed();
+        log::info!(target: crate::gpu::STARTUP, "model and textures read in {read:.0?}");
+        let scene = Self::with_assets(gpu, color_format, &assets, options.anisotropy);
+        log::info!(
+            target: crate::gpu::STARTUP,
+            "room built (meshes, textures and their mipmaps uploaded) in {:.0?}",
+            start.elapsed() - read
+        );
+        Ok(scene)
     }
 
     /// The room built from assets already read (the web page fetches them).
