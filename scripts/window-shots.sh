@@ -24,7 +24,7 @@ out=book/src/images/window
 mkdir -p "$out" /tmp/workbook-window-shots
 for lesson in "${lessons[@]}"; do
     log=/tmp/workbook-window-shots/$lesson.log
-    "target/debug/$lesson" > "$log" 2>&1 &
+    "target/debug/$lesson" --resolution full > "$log" 2>&1 &
     pid=$!
     if ! timeout 30 xdotool search --sync --name "^$lesson " > /dev/null; then
         echo "window-shots: $lesson opened no window:" >&2; cat "$log" >&2; exit 1

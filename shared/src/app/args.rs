@@ -17,8 +17,8 @@ pub const MAX_SIZE: u32 = 16384;
 #[command(
     after_help = "Keys in the window: 1-9 cycle the knobs (Shift+digit goes back), [ and ] step \
                   back and forward through the frame, Tab cycles color/depth/stencil, drag to \
-                  orbit, wheel to zoom, right-click a pixel to tell its story in the panel, C prints the camera pose, H hides or shows the side panel, Esc \
-                  quits."
+                  orbit, wheel to zoom, right-click a pixel to tell its story in the panel, C prints the camera pose, H hides or shows the side panel, R \
+                  switches between half and full resolution, Esc quits."
 )]
 pub struct Args {
     /// Render one frame without a window and write it to this PNG file.
@@ -82,9 +82,35 @@ pub struct Args {
     /// Scale the side panel's text and controls, e.g. 1.5 on a projector.
     #[arg(long, value_name = "FACTOR", default_value = "1", value_parser = parse_scale)]
     pub ui_scale: f32,
+    /// How many pixels the window draws the lesson with: `auto` draws at half resolution (a
+    /// quarter of the pixels, scaled up) on a software GPU, where full resolution is not smooth,
+    /// and at full resolution on any other; R in the window switches. Screenshots always draw at
+    /// full resolution.
+    #[arg(long, value_name = "WHICH", default_value = "auto")]
+    pub resolution: Resolution,
     /// Say which GPU adapter was taken, and how long things took.
     #[arg(short, long)]
     pub verbose: bool,
+}
+
+/// `--resolution`: how many pixels the window draws the lesson with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Resolution {
+    /// Half on a software GPU (a CPU adapter), full on any other.
+    Auto,
+    Full,
+    Half,
+}
+
+impl Resolution {
+    /// Whether to draw at half resolution on an adapter of this type.
+    pub fn half(self, device_type: wgpu::DeviceType) -> bool {
+        match self {
+            Self::Auto => device_type == wgpu::DeviceType::Cpu,
+            Self::Full => false,
+            Self::Half => true,
+        }
+    }
 }
 
 fn parse_size(text: &str) -> Result<(u32, u32), String> {

@@ -142,6 +142,25 @@ impl<L: Lesson> Runner<L> {
         Ok(())
     }
 
+    /// Draws the frame into `picture` (of the size the lesson draws at) and shows it over the whole
+    /// of `target`, scaled: a window drawing at half resolution, a WebGL2 canvas (see
+    /// [`crate::app::web`]).
+    pub fn draw_through(
+        &mut self,
+        (picture, size): (&wgpu::TextureView, (u32, u32)),
+        target: &wgpu::TextureView,
+        stop: Stop,
+        show: Show,
+    ) -> Result<()> {
+        self.resize(size.0, size.1);
+        let (mut encoder, _) = self.record(picture, stop, show, picture)?;
+        self.scene
+            .blit
+            .draw(&self.gpu.device, &mut encoder, picture, target);
+        self.gpu.queue.submit([encoder.finish()]);
+        Ok(())
+    }
+
     /// Records the frame into `color` up to `stop` and, given `pictures`, paints the depth and stencil
     /// buffers, as they are then, into them (the depth linearised, or the stored values with
     /// `raw_depth`; not at all where the backend cannot read depth in a shader). Where the frame stops

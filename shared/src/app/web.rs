@@ -18,7 +18,7 @@ use wasm_bindgen_futures::JsFuture;
 
 use crate::app::runner::Runner;
 use crate::book::shots::Setting;
-use crate::gpu::Gpu;
+use crate::gpu::{Gpu, Picture};
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
@@ -100,8 +100,8 @@ pub struct Live<L: Lesson> {
     view_format: wgpu::TextureFormat,
     stop: Stop,
     show: Show,
-    /// Where a frame is drawn on WebGL2 before it is copied onto the canvas, and its size.
-    webgl2_picture: Option<((u32, u32), wgpu::TextureView)>,
+    /// Where a frame is drawn on WebGL2 before it is copied onto the canvas.
+    webgl2_picture: Picture,
 }
 
 /// Starts lesson `L` in `canvas` on `backend`, its room built from the files in the folder at
@@ -164,7 +164,7 @@ pub async fn start<L: Lesson>(
         view_format,
         stop: Stop::Last,
         show: L::SHOWS,
-        webgl2_picture: None,
+        webgl2_picture: Picture::new("WebGL2 frame", view_format),
     }))
 }
 
@@ -256,25 +256,6 @@ impl<L: Lesson> Live<L> {
 }
 
 impl<L: Lesson> Live<L> {
-    /// The texture a WebGL2 frame is drawn into (see [`Live::draw_frame`]), made again for a new size.
-    fn picture(&mut self, size: (u32, u32)) -> wgpu::TextureView {
-        if let Some((made, view)) = &self.webgl2_picture
-            && *made == size
-        {
-            return view.clone();
-        }
-        let texture = crate::gpu::target_texture(
-            &self.runner.gpu.device,
-            "WebGL2 frame",
-            self.view_format,
-            size,
-            wgpu::TextureUsages::TEXTURE_BINDING,
-        );
-        let view = texture.create_view(&Default::default());
-        self.webgl2_picture = Some((size, view.clone()));
-        view
-    }
-
     /// Draws a frame into the canvas; says why it did not where the canvas had no texture to give.
     fn draw_frame(&mut self) -> Result<Option<&'static str>> {
         let frame = match self.surface.get_current_texture() {
@@ -303,14 +284,9 @@ impl<L: Lesson> Live<L> {
             // (30.0.1) shows a WebGL2 frame by drawing it onto the canvas under the colour mask the
             // frame's last draw left — and a frame that ends marking the mirror (no colour
             // writes) would never reach the canvas. The copy's own draw writes every colour.
-            self.runner.resize(size.0, size.1);
-            let picture = self.picture(size);
-            let (mut encoder, _) = self
-                .runner
-                .record(&picture, self.stop, self.show, &picture)?;
-            let (device, scene) = (&self.runner.gpu.device, &self.runner.scene);
-            scene.blit.draw(device, &mut encoder, &picture, &view);
-            self.runner.gpu.queue.submit([encoder.finish()]);
+            let picture = self.webgl2_picture.at(&self.runner.gpu.device, size);
+            self.runner
+                .draw_through((&picture, size), &view, self.stop, self.show)?;
         } else {
             self.runner.draw_alone(&view, size, self.stop, self.show)?;
         }

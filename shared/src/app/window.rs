@@ -130,7 +130,10 @@ impl<L: Lesson> App<'_, L> {
         if !runner.can_show(show) {
             anyhow::bail!(crate::gpu::views::DepthViewPipelines::UNSUPPORTED);
         }
-        let workbench = Workbench::new(&runner, self.args)?;
+        let mut workbench = Workbench::new(&runner, self.args)?;
+        // A software GPU's window draws at half resolution unless told otherwise.
+        let device_type = runner.gpu.adapter.get_info().device_type;
+        workbench.half_resolution = self.args.resolution.half(device_type);
         let panel_input = egui_winit::State::new(
             workbench.context().clone(),
             egui::ViewportId::ROOT,
@@ -332,10 +335,11 @@ impl<L: Lesson> State<L> {
             }
             again = drawn.again;
         } else {
-            // The lesson alone, straight into the window, as the headless runner draws it.
+            // The lesson alone, straight into the window, as the headless runner draws it (or at
+            // half resolution, scaled up).
             let size = (self.config.width, self.config.height);
-            let Viewing { stop, show } = self.viewing;
-            self.runner.draw_alone(&view, size, stop, show)?;
+            let (runner, viewing) = (&mut self.runner, self.viewing);
+            self.workbench.draw_alone(runner, viewing, &view, size)?;
         }
         self.window.pre_present_notify();
         self.runner.gpu.queue.present(frame);
@@ -416,6 +420,11 @@ impl<L: Lesson> State<L> {
         }
         if code == KeyH {
             self.workbench.visible = !self.workbench.visible;
+            return Ok(true);
+        }
+        if code == KeyR {
+            let half = !self.workbench.half_resolution;
+            self.workbench.set_half_resolution(half);
             return Ok(true);
         }
         if code == KeyC {

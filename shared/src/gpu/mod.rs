@@ -278,6 +278,38 @@ pub fn target_texture(
     })
 }
 
+/// A picture the lesson draws into before it is shown scaled (see
+/// [`crate::app::runner::Runner::draw_through`]), made again when its size changes.
+pub struct Picture {
+    label: &'static str,
+    format: wgpu::TextureFormat,
+    made: Option<((u32, u32), wgpu::TextureView)>,
+}
+
+impl Picture {
+    pub fn new(label: &'static str, format: wgpu::TextureFormat) -> Self {
+        Self {
+            label,
+            format,
+            made: None,
+        }
+    }
+
+    /// The picture at `size`.
+    pub fn at(&mut self, device: &wgpu::Device, size: (u32, u32)) -> wgpu::TextureView {
+        if let Some((made, view)) = &self.made
+            && *made == size
+        {
+            return view.clone();
+        }
+        let usage = wgpu::TextureUsages::TEXTURE_BINDING;
+        let texture = target_texture(device, self.label, self.format, size, usage);
+        let view = texture.create_view(&Default::default());
+        self.made = Some((size, view.clone()));
+        view
+    }
+}
+
 impl DepthStencil {
     pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
         // Sampled by --show depth, copied by the tests' readbacks.

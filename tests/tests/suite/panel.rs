@@ -38,6 +38,7 @@ fn harness(
             show_difference: false,
             message: None,
             picked: None,
+            half_resolution: Some(true),
         };
         asked.extend(panel::show(ui, &model));
     };
@@ -150,6 +151,18 @@ fn the_panel_asks_for_steps_and_hiding() {
     harness.get_by_label("Hide").click();
     harness.run();
     assert_eq!(harness.state(), &[Action::Step(1), Action::Hide]);
+}
+
+/// On a software GPU the panel says the lesson is drawn at half resolution, and its box asks for
+/// full resolution.
+#[test]
+fn the_panel_says_a_software_gpu_draws_at_half_resolution_and_switches() {
+    let mut harness = harness(&[], Knobs::defaults(&[]), None);
+    harness
+        .get_by_label("software GPU: drawing at half resolution (R)")
+        .click();
+    harness.run();
+    assert_eq!(harness.state(), &[Action::HalfResolution(false)]);
 }
 
 /// The panel's cost section, from the real workbench drawn headless frame after frame (the window's
@@ -297,4 +310,38 @@ fn a_picked_pixel_s_story_is_the_one_pixel_tells() {
         skeleton(&told(&bench)),
         skeleton(&tell(&["mark-depth-test=off"]))
     );
+}
+
+/// At half resolution (a software GPU's window, `--resolution half`) the lesson draws a quarter of
+/// the view's pixels beside the panel, and a quarter of the window's without it.
+#[test]
+fn half_resolution_draws_a_quarter_of_the_pixels() {
+    use reflect_skull::ReflectSkull;
+    use workbook::app::args::Args;
+    use workbook::app::workbench::headless::HeadlessWorkbench;
+
+    let bench = |resolution: &str| {
+        let arguments = [
+            "reflect-skull",
+            "--size",
+            "640x360",
+            "--resolution",
+            resolution,
+        ];
+        let args = Args::parse_for::<ReflectSkull>(arguments).unwrap();
+        let mut bench = HeadlessWorkbench::<ReflectSkull>::new(&args).unwrap();
+        bench.frame().unwrap();
+        bench.frame().unwrap();
+        bench
+    };
+    let (full, mut half) = (bench("full"), bench("half"));
+    let (width, height) = full.workbench.view_size();
+    assert_eq!(
+        half.workbench.view_size(),
+        (width.div_ceil(2), height.div_ceil(2))
+    );
+    assert_eq!(half.runner.depth_stencil.size(), half.workbench.view_size());
+    half.set_panel(false);
+    half.frame().unwrap();
+    assert_eq!(half.runner.depth_stencil.size(), (320, 180));
 }

@@ -82,9 +82,10 @@ impl<L: Lesson> HeadlessWorkbench<L> {
                 let (runner, viewing) = (&mut self.runner, &mut self.viewing);
                 self.workbench.draw(input, runner, viewing, &self.target)?;
             } else {
-                let Viewing { stop, show } = self.viewing;
                 let view = self.target.create_view(&Default::default());
-                self.runner.draw_alone(&view, self.size, stop, show)?;
+                let (runner, viewing) = (&mut self.runner, self.viewing);
+                self.workbench
+                    .draw_alone(runner, viewing, &view, self.size)?;
             }
             let recorded = start.elapsed().as_secs_f64() * 1e3;
             self.runner

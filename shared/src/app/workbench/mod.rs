@@ -15,10 +15,11 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 
-use crate::app::args::Args;
+use crate::app::args::{Args, Resolution};
 use crate::app::runner::Runner;
 use crate::book::check::{self, Verdict};
 use crate::book::shots::{self, BookShot, Setting};
+use crate::gpu::Picture;
 use crate::gpu::timing::LateTimer;
 use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
@@ -92,6 +93,13 @@ pub struct Workbench<L: Lesson> {
     picked: Option<(u32, u32)>,
     story: Option<(StoryFor, Result<Story, String>)>,
     story_at: Instant,
+    /// Whether the lesson is drawn at half the view's resolution and scaled up (a software GPU's
+    /// window, see `--resolution`).
+    pub half_resolution: bool,
+    /// Whether the adapter is a CPU's (the panel then says how many pixels it draws).
+    software_gpu: bool,
+    /// Where the lesson draws at half resolution while the panel is hidden.
+    half_picture: Picture,
     _lesson: std::marker::PhantomData<L>,
 }
 
@@ -172,6 +180,9 @@ impl<L: Lesson> Workbench<L> {
             picked: None,
             story: None,
             story_at: Instant::now(),
+            half_resolution: args.resolution == Resolution::Half,
+            software_gpu: info.device_type == wgpu::DeviceType::Cpu,
+            half_picture: Picture::new("half-resolution frame", runner.scene.color_format),
             _lesson: std::marker::PhantomData,
         })
     }
@@ -198,7 +209,9 @@ impl<L: Lesson> Workbench<L> {
             laid_out.view_rect.min.x as f64 * ppp,
             laid_out.view_rect.min.y as f64 * ppp,
         );
-        let (px, py) = ((x - left).floor(), (y - top).floor());
+        // The picked pixel is one of the lesson's: at half resolution, one of four of the view's.
+        let scale = self.scale() as f64;
+        let (px, py) = (((x - left) / scale).floor(), ((y - top) / scale).floor());
         let (width, height) = self.buffers.size;
         if px < 0.0 || py < 0.0 || px >= width as f64 || py >= height as f64 {
             return false;
@@ -247,9 +260,42 @@ impl<L: Lesson> Workbench<L> {
         self.story.as_ref().map(|(_, story)| story)
     }
 
-    /// The size of the view beside the panel, in pixels.
+    /// The size the lesson is drawn at beside the panel, in pixels: the view's, or at half
+    /// resolution half of it.
     pub fn view_size(&self) -> (u32, u32) {
         self.buffers.size
+    }
+
+    /// Draws the lesson alone into `target` (`size` pixels), with the panel hidden: straight into
+    /// it, as the headless runner draws, or at half resolution and scaled up.
+    pub fn draw_alone(
+        &mut self,
+        runner: &mut Runner<L>,
+        Viewing { stop, show }: Viewing,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+    ) -> Result<()> {
+        if !self.half_resolution {
+            return runner.draw_alone(target, size, stop, show);
+        }
+        let half = (size.0.div_ceil(2), size.1.div_ceil(2));
+        let picture = self.half_picture.at(&runner.gpu.device, half);
+        runner.draw_through((&picture, half), target, stop, show)
+    }
+
+    /// Draws the lesson at half the view's resolution, or at full (`R`, the panel's box).
+    pub fn set_half_resolution(&mut self, half: bool) {
+        if half != self.half_resolution {
+            self.half_resolution = half;
+            // A picked pixel was one of the other resolution's.
+            self.picked = None;
+            self.story = None;
+        }
+    }
+
+    /// How many of the view's pixels a side of one of the lesson's covers.
+    fn scale(&self) -> u32 {
+        if self.half_resolution { 2 } else { 1 }
     }
 
     pub fn context(&self) -> &egui::Context {
@@ -296,6 +342,8 @@ impl<L: Lesson> Workbench<L> {
             book: &self.book,
             show_difference: self.show_difference,
             message: self.message.as_deref(),
+            half_resolution: (self.software_gpu || self.half_resolution)
+                .then_some(self.half_resolution),
             picked: self.picked.map(|pixel| Picked {
                 pixel,
                 story: match &self.story {
@@ -331,6 +379,7 @@ impl<L: Lesson> Workbench<L> {
         } else {
             let mut view_rect = egui::Rect::NOTHING;
             let picked = self.picked;
+            let scale = self.scale() as f32;
             let ctx = self.ctx.clone();
             let output = ctx.run_ui(raw_input, |ui| {
                 actions = panel::show(ui, &model);
@@ -341,7 +390,8 @@ impl<L: Lesson> Workbench<L> {
                 // The picked pixel, marked with a cross in the view.
                 if let Some((x, y)) = picked {
                     let ppp = ui.ctx().pixels_per_point();
-                    let centre = view_rect.min + egui::vec2(x as f32 + 0.5, y as f32 + 0.5) / ppp;
+                    let pixel = egui::vec2(x as f32 + 0.5, y as f32 + 0.5) * scale;
+                    let centre = view_rect.min + pixel / ppp;
                     let stroke = egui::Stroke::new(2.0 / ppp, egui::Color32::from_rgb(255, 220, 0));
                     for direction in [egui::vec2(1.0, 0.0), egui::vec2(0.0, 1.0)] {
                         for sign in [-1.0, 1.0] {
@@ -382,8 +432,11 @@ impl<L: Lesson> Workbench<L> {
             ((view_rect.width() * ppp).round() as u32).clamp(1, max),
             ((view_rect.height() * ppp).round() as u32).clamp(1, max),
         );
-        if view_size != self.buffers.size {
-            self.buffers = Buffers::new(&runner.gpu, runner.scene.color_format, view_size);
+        // At half resolution the lesson draws a quarter of the pixels, scaled up into the view.
+        let scale = self.scale();
+        let drawn = (view_size.0.div_ceil(scale), view_size.1.div_ceil(scale));
+        if drawn != self.buffers.size {
+            self.buffers = Buffers::new(&runner.gpu, runner.scene.color_format, drawn);
             for (view, id) in self.buffers.encoded.iter().zip(self.ids) {
                 self.renderer.update_egui_texture_from_wgpu_texture(
                     &runner.gpu.device,
@@ -394,14 +447,14 @@ impl<L: Lesson> Workbench<L> {
             }
         }
         // The lesson drew at the window's full size while the panel was hidden.
-        runner.resize(view_size.0, view_size.1);
+        runner.resize(drawn.0, drawn.1);
         let [color, depth, stencil] = &self.buffers.views;
         let raw_depth = viewing.show == Show::RawDepth;
         // The depth and stencil pictures cost a third of the frame on a software GPU (the stencil
         // one is nine full-window passes): paint them when what they show changed, when one is the
         // view, and otherwise (the camera moving) twice a second.
         // The panel's own picture (its small buffers among it) follows them.
-        let key = (runner.knobs.clone(), *viewing, view_size);
+        let key = (runner.knobs.clone(), *viewing, drawn);
         let due = self.pictures_for.as_ref() != Some(&key)
             || self.pictures_at.elapsed().as_secs_f64() > PICTURES_EVERY_S;
         let fresh = due || viewing.show != Show::Color;
@@ -664,6 +717,7 @@ impl<L: Lesson> Workbench<L> {
                 self.story = None;
             }
             Action::Hide => self.visible = false,
+            Action::HalfResolution(half) => self.set_half_resolution(half),
         }
         Ok(())
     }
@@ -806,6 +860,7 @@ struct Shown {
     show_difference: bool,
     difference_shown: bool,
     message: Option<String>,
+    half_resolution: Option<bool>,
     /// The picked pixel and its story as told.
     picked: Option<((u32, u32), String)>,
 }
@@ -826,6 +881,7 @@ impl Shown {
             show_difference: model.show_difference,
             difference_shown,
             message: model.message.map(str::to_string),
+            half_resolution: model.half_resolution,
             picked: model.picked.as_ref().map(|picked| {
                 let story = match picked.story {
                     Ok(story) => story.text(),

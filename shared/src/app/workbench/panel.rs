@@ -31,6 +31,8 @@ pub enum Action {
     /// Stop following the picked pixel.
     Unpick,
     Hide,
+    /// Draw the lesson at half the view's resolution, or at full.
+    HalfResolution(bool),
 }
 
 /// The pixel picked in the view (a right-click) and its story, or why it cannot be told.
@@ -99,6 +101,9 @@ pub struct Model<'a> {
     pub message: Option<&'a str>,
     /// The pixel whose story the panel tells, if one is picked.
     pub picked: Option<Picked<'a>>,
+    /// Whether the lesson is drawn at half resolution; `None` hides the choice (a GPU that is not
+    /// a software one, at full resolution).
+    pub half_resolution: Option<bool>,
 }
 
 /// Draws the panel on the right of `ui`; returns what the user asked for.
@@ -127,7 +132,7 @@ pub fn show(ui: &mut Ui, model: &Model<'_>) -> Vec<Action> {
                 knobs(ui, model, &mut actions);
                 steps(ui, model, &mut actions);
                 pixel(ui, model, &mut actions);
-                cost(ui, model);
+                cost(ui, model, &mut actions);
                 camera(ui, model, &mut actions);
                 book(ui, model, &mut actions);
                 if let Some(message) = model.message {
@@ -289,9 +294,19 @@ fn pixel(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
 }
 
 /// GPU time per step where the adapter has timestamp queries, otherwise the CPU's frame time.
-fn cost(ui: &mut Ui, model: &Model<'_>) {
+fn cost(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
     section(ui, "What it costs");
     ui.label(RichText::new(model.adapter).small());
+    if let Some(half) = model.half_resolution {
+        let mut checked = half;
+        let said = match half {
+            true => "software GPU: drawing at half resolution (R)",
+            false => "drawing at full resolution (R)",
+        };
+        if ui.checkbox(&mut checked, said).changed() {
+            actions.push(Action::HalfResolution(checked));
+        }
+    }
     let Some(cost) = model.cost else {
         ui.label("Measuring…");
         return;
