@@ -122,10 +122,15 @@ impl Running {
         Running::start_with_panel(display, &args, env)
     }
 
-    /// The lesson in its workbench, the panel shown unless `args` say `--no-panel`.
+    /// The lesson in its workbench, the panel shown unless `args` say `--no-panel`. At full
+    /// resolution: on a software GPU the window would otherwise draw half as many pixels a side
+    /// and scale them up, and it must show exactly what the headless runner renders.
     fn start_with_panel(display: &str, args: &[&str], env: &[(&str, &str)]) -> Running {
         let mut command = Command::new(EXE);
-        command.args(args).env("DISPLAY", display);
+        command
+            .args(["--resolution", "full"])
+            .args(args)
+            .env("DISPLAY", display);
         for name in ["WAYLAND_DISPLAY", "RUST_BACKTRACE", "RUST_LOG"] {
             command.env_remove(name);
         }
