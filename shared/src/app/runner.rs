@@ -38,7 +38,11 @@ impl<L: Lesson> Runner<L> {
         (width, height): (u32, u32),
     ) -> Result<Self> {
         let scene = Scene::new(&gpu, color_format, scene)?;
-        Self::with_scene(gpu, scene, knobs, camera, (width, height))
+        // Timed here, not in `with_scene`: the browser has no `Instant` (it panics there).
+        let start = std::time::Instant::now();
+        let runner = Self::with_scene(gpu, scene, knobs, camera, (width, height));
+        log::info!(target: crate::gpu::STARTUP, "lesson built in {:.0?}", start.elapsed());
+        runner
     }
 
     /// The lesson in a room already built (the web page builds it from fetched assets).
@@ -49,9 +53,7 @@ impl<L: Lesson> Runner<L> {
         camera: Camera,
         (width, height): (u32, u32),
     ) -> Result<Self> {
-        let start = std::time::Instant::now();
         let lesson = L::new(&gpu, &scene, &knobs)?;
-        log::info!(target: crate::gpu::STARTUP, "lesson built in {:.0?}", start.elapsed());
         let depth_stencil = DepthStencil::new(&gpu.device, width, height);
         let depth_bind_group = depth_bind_group(&gpu, &scene, &depth_stencil);
         gpu.check_errors()?;
