@@ -459,10 +459,14 @@ impl<L: Lesson> Workbench<L> {
             || self.pictures_at.elapsed().as_secs_f64() > PICTURES_EVERY_S;
         let fresh = due || viewing.show != Show::Color;
         let pictures = fresh.then_some([depth, stencil]);
+        // The steps are timed with the pictures too, twice a second: a timed frame records a pass
+        // a step with timestamps, where the others record the whole frame in one pass (timing every
+        // frame cost an H100 up to a third of a window's frame with the panel).
         let timer = match &mut self.timer {
-            Some(timer) => Some(timer.for_next_frame(&runner.gpu.device)?),
-            None => None,
+            Some(timer) if due => Some(timer.for_next_frame(&runner.gpu.device)?),
+            _ => None,
         };
+        let timed = timer.is_some();
         let (mut encoder, steps) =
             runner.record_buffers(color, pictures, viewing.stop, raw_depth, timer)?;
         if due {
@@ -573,7 +577,9 @@ impl<L: Lesson> Workbench<L> {
         // window never waits for the GPU to report a statistic.
         let steps_ms = match &mut self.timer {
             Some(timer) => {
-                timer.submitted(steps.len().min(viewing.stop.count()));
+                if timed {
+                    timer.submitted(steps.len().min(viewing.stop.count()));
+                }
                 timer.latest(&runner.gpu.device)?.map(<[f64]>::to_vec)
             }
             None => None,
@@ -600,7 +606,16 @@ impl<L: Lesson> Workbench<L> {
             fps: frame_ms.map(|ms| 1000.0 / ms),
         });
         // Figures that change every frame cannot be read, and would paint the panel every frame.
-        if self.shown_cost.is_none() || due {
+        // The first step times arrive a frame or two after the first timed frame: shown when they do.
+        let first_times = self
+            .shown_cost
+            .as_ref()
+            .is_some_and(|shown| shown.steps_ms.is_none())
+            && self
+                .cost
+                .as_ref()
+                .is_some_and(|cost| cost.steps_ms.is_some());
+        if self.shown_cost.is_none() || due || first_times {
             self.shown_cost = self.cost.clone();
             self.shown_camera = Some(runner.camera);
         }
@@ -612,8 +627,18 @@ impl<L: Lesson> Workbench<L> {
                 .story
                 .as_ref()
                 .is_none_or(|(told, _)| told.1 != runner.camera || told.2 != self.buffers.size);
+        // Timed but no times yet: draw until they come (a frame or two), for the panel to show them.
+        let awaiting_times = self.timer.is_some()
+            && self
+                .shown_cost
+                .as_ref()
+                .is_some_and(|shown| shown.steps_ms.is_none());
         Ok(Drawn {
-            again: changed || self.verdicts.is_some() || stale_camera || stale_story,
+            again: changed
+                || self.verdicts.is_some()
+                || stale_camera
+                || stale_story
+                || awaiting_times,
             repaint_now: output
                 .viewport_output
                 .values()
