@@ -6,6 +6,7 @@ pub mod book;
 pub mod browser;
 pub mod flip;
 pub mod geometry;
+pub mod launches;
 pub mod pairs;
 pub mod shots;
 pub mod stories;

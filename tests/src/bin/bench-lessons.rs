@@ -1,12 +1,17 @@
-//! `cargo bench-lessons [--quick] [--out PREFIX]`: measures every lesson (see `workbook_tests::bench`)
-//! in a release build, prints the table, and writes PREFIX.csv and PREFIX-<size>.svg; then the
-//! window's panel, every lesson's frame with and without it, into PREFIX-panel.csv.
+//! `cargo bench-lessons [--quick] [--only PART,...] [--out PREFIX]`: measures every lesson (see
+//! `workbook_tests::bench`) in a release build, prints the table, and writes PREFIX.csv and
+//! PREFIX-<size>.svg; then the window's panel, every lesson's frame with and without it, into
+//! PREFIX-panel.csv; then what a learner waits for (`workbook_tests::launches`): headless start to
+//! PNG of every lesson's binary, debug and release, into PREFIX-start-up.csv, and, on a display, the
+//! window's frames/s at full and half resolution into PREFIX-window.csv.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
 use workbook_tests::bench::{self, CASES, Plan};
+use workbook_tests::launches;
+use workbook_tests::shots::LESSONS;
 
 #[derive(Parser)]
 #[command(
@@ -23,9 +28,27 @@ struct Args {
     /// Only this lesson's cases (all of its knob values), and its panel.
     #[arg(long, value_name = "NAME")]
     lesson: Option<String>,
-    /// Where to write PREFIX.csv and PREFIX-WxH.svg.
+    /// Where to write PREFIX.csv and PREFIX-WxH.svg (and PREFIX-panel.csv, PREFIX-start-up.csv,
+    /// PREFIX-window.csv).
     #[arg(long, value_name = "PREFIX")]
     out: Option<PathBuf>,
+    /// Only these parts (comma-separated; all of them by default).
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "PART")]
+    only: Vec<Part>,
+}
+
+/// What `bench-lessons` measures.
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Part {
+    /// Every lesson's frames headless: GPU time per step, CPU time, frames/s, memory.
+    Frames,
+    /// The window's panel: every lesson's window frame with the panel and without.
+    Panel,
+    /// Headless start to PNG of every lesson's binary, debug and release (builds them first).
+    StartUp,
+    /// The window's frames/s at full and half resolution, release (needs a display: run under
+    /// `xvfb-run -a` without one).
+    Window,
 }
 
 fn main() -> ExitCode {
@@ -51,9 +74,10 @@ fn main() -> ExitCode {
         eprintln!("bench-lessons: error: no lesson `{name}`");
         return ExitCode::FAILURE;
     }
+    let wanted = |part| args.only.is_empty() || args.only.contains(&part);
     let started = std::time::Instant::now();
     let mut results = Vec::new();
-    for size in &plan.sizes {
+    for size in plan.sizes.iter().filter(|_| wanted(Part::Frames)) {
         for case in CASES
             .iter()
             .filter(|c| !plan.defaults_only || c.label().is_empty())
@@ -69,13 +93,15 @@ fn main() -> ExitCode {
         }
     }
     let adapter = results.first().map_or(String::new(), |m| m.adapter.clone());
-    println!("adapter: {adapter}");
-    if results.iter().all(|m| m.gpu_ms.is_none()) {
+    if wanted(Part::Frames) {
+        println!("adapter: {adapter}");
+        print!("{}", bench::table(&results));
+    }
+    if wanted(Part::Frames) && results.iter().all(|m| m.gpu_ms.is_none()) {
         println!(
             "this adapter has no timestamp queries: GPU times are not measured (CPU and frame times are)"
         );
     }
-    print!("{}", bench::table(&results));
     let peak = std::fs::read_to_string("/proc/self/status")
         .ok()
         .and_then(|s| {
@@ -96,7 +122,11 @@ fn main() -> ExitCode {
     };
     let mut panel = Vec::new();
     let only = |lesson: &&&str| args.lesson.as_ref().is_none_or(|name| name == *lesson);
-    for lesson in panel_lessons.iter().filter(only) {
+    for lesson in panel_lessons
+        .iter()
+        .filter(only)
+        .filter(|_| wanted(Part::Panel))
+    {
         match bench::measure_panel(lesson, panel_size, &plan) {
             Ok(measured) => panel.push(measured),
             Err(error) => {
@@ -105,21 +135,97 @@ fn main() -> ExitCode {
             }
         }
     }
-    println!("\nthe window's frame, the lesson alone and with the panel (wall time, waited for):");
-    print!("{}", bench::panel_table(&panel));
+    if wanted(Part::Panel) {
+        println!(
+            "\nthe window's frame, the lesson alone and with the panel (wall time, waited for):"
+        );
+        print!("{}", bench::panel_table(&panel));
+    }
+    // What a learner waits for, on the lessons' own binaries (the quick run: one lesson, in this
+    // program's own profile, once).
+    let (launch_lessons, profiles, runs): (Vec<&'static str>, Vec<&'static str>, usize) =
+        match args.quick {
+            true => (vec!["reflect-skull"], vec![launches::own_profile()], 1),
+            false => (LESSONS.to_vec(), launches::PROFILES.to_vec(), 5),
+        };
+    let launch_lessons: Vec<_> = launch_lessons.into_iter().filter(|l| only(&l)).collect();
+    let mut start_up = Vec::new();
+    let mut window = Vec::new();
+    let window_wanted =
+        wanted(Part::Window) && (!args.only.is_empty() || launches::display().is_some());
+    if wanted(Part::StartUp) || window_wanted {
+        let profiles: Vec<_> = match wanted(Part::StartUp) {
+            true => profiles.clone(),
+            false => vec![window_profile(args.quick)],
+        };
+        if let Err(error) = launches::build_lessons(&profiles, &launch_lessons) {
+            eprintln!("bench-lessons: error: {error:#}");
+            return ExitCode::FAILURE;
+        }
+    }
+    if wanted(Part::StartUp) {
+        for lesson in &launch_lessons {
+            match launches::measure_start_up(lesson, (1280, 720), &profiles, runs) {
+                Ok(measured) => start_up.push(measured),
+                Err(error) => {
+                    eprintln!("bench-lessons: error: {lesson}'s start-up: {error:#}");
+                    return ExitCode::FAILURE;
+                }
+            }
+        }
+        println!("\nheadless start to PNG, 1280x720, the median of {runs} runs in turns:");
+        print!("{}", launches::start_up_table(&start_up));
+    }
+    if window_wanted {
+        if launches::display().is_none() {
+            eprintln!(
+                "bench-lessons: error: the window's frames/s need a display (run under xvfb-run -a)"
+            );
+            return ExitCode::FAILURE;
+        }
+        for lesson in &launch_lessons {
+            match launches::measure_window(lesson, window_profile(args.quick), runs.min(2)) {
+                Ok(measured) => window.push(measured),
+                Err(error) => {
+                    eprintln!("bench-lessons: error: {lesson}'s window: {error:#}");
+                    return ExitCode::FAILURE;
+                }
+            }
+        }
+        println!(
+            "\nthe window with its panel, 1280x720, frames/s over frames 30 to 90 ({}):",
+            window_profile(args.quick)
+        );
+        print!("{}", launches::window_table(&window));
+    } else if wanted(Part::Window) {
+        println!("\nno display: the window's frames/s are not measured (run under xvfb-run -a)");
+    }
     println!("measured in {:.0?}", started.elapsed());
     if let Some(prefix) = args.out {
         let csv = prefix.with_extension("csv");
         let panel_csv = PathBuf::from(format!("{}-panel.csv", prefix.display()));
-        let written = std::fs::write(&csv, bench::csv(&results)).and_then(|()| {
-            std::fs::write(&panel_csv, bench::panel_csv(&panel))?;
-            for size in &plan.sizes {
+        let written = (|| {
+            if wanted(Part::Frames) {
+                std::fs::write(&csv, bench::csv(&results))?;
+            }
+            if wanted(Part::Panel) {
+                std::fs::write(&panel_csv, bench::panel_csv(&panel))?;
+            }
+            if !start_up.is_empty() {
+                let name = format!("{}-start-up.csv", prefix.display());
+                std::fs::write(name, launches::start_up_csv(&start_up))?;
+            }
+            if !window.is_empty() {
+                let name = format!("{}-window.csv", prefix.display());
+                std::fs::write(name, launches::window_csv(&window))?;
+            }
+            for size in plan.sizes.iter().filter(|_| wanted(Part::Frames)) {
                 let name = format!("{}-{}x{}.svg", prefix.display(), size.0, size.1);
                 let title = format!("GPU time per frame, {}x{}, {adapter}", size.0, size.1);
                 std::fs::write(name, bench::plot(&results, *size, &title))?;
             }
-            Ok(())
-        });
+            Ok::<_, std::io::Error>(())
+        })();
         if let Err(error) = written {
             eprintln!(
                 "bench-lessons: error: cannot write {}: {error}",
@@ -127,7 +233,16 @@ fn main() -> ExitCode {
             );
             return ExitCode::FAILURE;
         }
-        println!("wrote {} and its plots", csv.display());
+        println!("wrote {}-*", prefix.display());
     }
     ExitCode::SUCCESS
+}
+
+/// The window is measured as a learner runs it fast: release (the quick run: this program's own
+/// profile, already built).
+fn window_profile(quick: bool) -> &'static str {
+    match quick {
+        true => launches::own_profile(),
+        false => "release",
+    }
 }
