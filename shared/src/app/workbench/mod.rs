@@ -73,6 +73,8 @@ pub struct Workbench<L: Lesson> {
     /// How many frames egui laid the panel out in (the others were idle).
     pub layouts: u64,
     presented: VecDeque<Instant>,
+    /// The frame's step names as the last frame recorded them, and what for.
+    steps: Option<((Knobs, Camera), Vec<&'static str>)>,
     /// What the depth and stencil pictures were last painted for, and when.
     pictures_for: Option<(Knobs, Viewing, (u32, u32))>,
     pictures_at: Instant,
@@ -163,6 +165,7 @@ impl<L: Lesson> Workbench<L> {
             laid_out: None,
             layouts: 0,
             presented: VecDeque::new(),
+            steps: None,
             pictures_for: None,
             pictures_at: Instant::now(),
             adapter: format!("{} ({:?})", info.name, info.backend),
@@ -320,7 +323,13 @@ impl<L: Lesson> Workbench<L> {
             ..Default::default()
         });
         self.tell_story(runner);
-        let steps = runner.steps();
+        // The step names as the last frame recorded them, unless what they follow changed: asking
+        // the lesson records a frame of no steps, an encoder made and dropped every frame.
+        let steps_key = (runner.knobs.clone(), runner.camera);
+        let steps = match &self.steps {
+            Some((key, steps)) if *key == steps_key => steps.clone(),
+            _ => runner.steps(),
+        };
         let step = viewing.stop.resolve(&steps).unwrap_or(steps.len());
         let setting = setting(runner, *viewing);
         self.follow_book(&setting);
@@ -469,6 +478,7 @@ impl<L: Lesson> Workbench<L> {
         let timed = timer.is_some();
         let (mut encoder, steps) =
             runner.record_buffers(color, pictures, viewing.stop, raw_depth, timer)?;
+        self.steps = Some(((runner.knobs.clone(), runner.camera), steps.clone()));
         if due {
             self.pictures_for = Some(key);
             self.pictures_at = Instant::now();
