@@ -61,11 +61,13 @@ fn step_times_are_positive_and_fit_in_the_frame() {
     }
 }
 
-/// The book's cost page shows what the benchmark wrote: each CSV there has the benchmark's columns,
-/// and each has its plots.
+/// The book's cost page shows what the benchmark wrote: each CSV there has the benchmark's columns
+/// and is linked from the page, and each adapter's main figures have their plots.
 #[test]
 fn the_cost_page_shows_benchmark_output() {
+    use workbook_tests::launches::{START_UP_CSV_HEADER, WINDOW_CSV_HEADER};
     let dir = workbook_tests::workspace().join("book/src/cost");
+    let page = std::fs::read_to_string(dir.with_extension("md")).unwrap();
     let mut found = 0;
     for entry in std::fs::read_dir(&dir).unwrap().flatten() {
         let path = entry.path();
@@ -74,21 +76,25 @@ fn the_cost_page_shows_benchmark_output() {
         }
         let text = std::fs::read_to_string(&path).unwrap();
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        // The window's panel: one row per lesson, beside the same adapter's main figures.
-        if let Some(adapter) = stem.strip_suffix("-panel") {
-            assert_eq!(
-                text.lines().next(),
-                Some(PANEL_CSV_HEADER),
-                "{}",
-                path.display()
-            );
+        assert!(
+            page.contains(&format!("(cost/{stem}.csv)")),
+            "the cost page does not link cost/{stem}.csv"
+        );
+        // The window's panel, start-up and the window's frames/s: one row per lesson (start-up:
+        // one per lesson and profile).
+        let parts = [
+            ("-panel", PANEL_CSV_HEADER, 1),
+            ("-start-up", START_UP_CSV_HEADER, 2),
+            ("-window", WINDOW_CSV_HEADER, 1),
+        ];
+        if let Some((_, header, rows)) = parts.iter().find(|(suffix, ..)| stem.ends_with(suffix)) {
+            assert_eq!(text.lines().next(), Some(*header), "{}", path.display());
             assert_eq!(
                 text.lines().count(),
-                LESSONS.len() + 1,
+                LESSONS.len() * rows + 1,
                 "{}",
                 path.display()
             );
-            assert!(dir.join(format!("{adapter}.csv")).exists(), "{adapter}.csv");
             continue;
         }
         assert_eq!(text.lines().next(), Some(CSV_HEADER), "{}", path.display());
