@@ -19,15 +19,56 @@ fi
 # copies into the book (needs wasm-bindgen-cli of the crate's version, and npm for wasm-opt).
 cargo web ${CI:+--locked}
 
-log=$(mktemp)
-status=0
-mdbook build 2>&1 | tee "$log" || status=$?
-if [ "$status" -ne 0 ]; then
-  echo "book: mdbook failed (exit $status)" >&2
-  exit 1
-fi
-if grep -iE "error|warn" "$log" >/dev/null; then
-  echo "book: mdbook logged errors or warnings (above); the book is not clean" >&2
-  exit 1
-fi
-echo "book: built into book/build/html"
+# Builds the book with `mdbook build` and the environment given, into DEST (relative to book/), and
+# fails on any error or warning mdBook logs.
+build() {
+  local dest=$1; shift
+  local log status=0
+  log=$(mktemp)
+  env "$@" mdbook build -d "$dest" 2>&1 | tee "$log" || status=$?
+  if [ "$status" -ne 0 ]; then
+    echo "book: mdbook failed (exit $status) building $dest" >&2
+    exit 1
+  fi
+  if grep -iE "error|warn" "$log" >/dev/null; then
+    echo "book: mdbook logged errors or warnings building $dest (above); the book is not clean" >&2
+    exit 1
+  fi
+}
+
+# English, at the root of build/html.
+build build
+
+# Translations (see po/README.md). Each language's messages must match the English as it is now:
+# every message of a fresh extraction translated, none fuzzy, or the build fails and says which.
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+MDBOOK_BUILD__USE_DEFAULT_PREPROCESSORS=false MDBOOK_OUTPUT='{"xgettext": {}}' \
+  mdbook build -d "$work/pot" >"$work/extract.log" 2>&1 || { cat "$work/extract.log"; exit 1; }
+for po in po/*.po; do
+  language=$(basename "$po" .po)
+  if ! msgcmp "$po" "$work/pot/messages.pot" 2>"$work/msgcmp.log"; then
+    grep -v 'this message is not used' "$work/msgcmp.log" | head -20 >&2
+    echo "book: $po lacks translations of the English as it is now ($(sed -n 's/.*found \([0-9]*\) fatal error.*/\1/p' "$work/msgcmp.log") messages: untranslated, fuzzy or new; the first are above); run book/po/update.sh and translate them (book/po/README.md)" >&2
+    exit 1
+  fi
+  # The book's title is no message of any page: it is the .po header's X-Book-Title.
+  title=$(sed -n 's/^"X-Book-Title: \(.*\)\\n"$/\1/p' "$po")
+  build "$work/$language" MDBOOK_BOOK__LANGUAGE="$language" ${title:+MDBOOK_BOOK__TITLE="$title"}
+  if grep -rl 'katex-error' "$work/$language/html" --include=*.html; then
+    echo "book: KaTeX errors in the $language book (the pages above)" >&2
+    exit 1
+  fi
+  rm -rf "build/html/$language"
+  mv "$work/$language/html" "build/html/$language"
+done
+
+# The round trip: a translation with every message empty gives the English book back, page for page
+# (whitespace aside) and formula for formula. This guards the patch that keeps the TeX intact
+# through gettext (po/TOOLCHAIN.md).
+mkdir -p "$work/empty"
+sed 's/charset=CHARSET/charset=UTF-8/' "$work/pot/messages.pot" >"$work/empty/xx.po"
+build "$work/xx" MDBOOK_BOOK__LANGUAGE=xx MDBOOK_PREPROCESSOR__GETTEXT__PO_DIR="$work/empty"
+python3 po/round_trip.py build/html "$work/xx/html"
+
+echo "book: built into book/build/html (and $(ls po/*.po | sed 's|po/\(.*\)\.po|build/html/\1|' | paste -sd ' '))"

@@ -1,18 +1,19 @@
 #!/usr/bin/env bash
 # Installs mdbook-xgettext, mdbook-gettext and mdbook-i18n-normalize from mdbook-i18n-helpers 0.4.0
-# (the only release for mdBook 0.5) with the math patch beside this script, into cargo's bin folder.
+# (the only release for mdBook 0.5) with the patch beside this script (math kept intact, emphasis written with `*`), into cargo's bin folder.
 #
 # Why patched: 0.4.0 parses Markdown without pulldown-cmark's math option, so it re-renders the TeX
 # in `$...$` and `$$...$$` as prose: backslashes dropped (`\,` `\{` `\&`), `_` and `<` escaped,
 # display blocks folded onto one line (upstream issue #105). The patch turns the option on and
-# keeps math inside the message it stands in. See TOOLCHAIN.md.
+# keeps math inside the message it stands in. It also writes emphasis back as `*...*`, not `_..._`,
+# which does not work next to Chinese characters. See TOOLCHAIN.md.
 #
 # Idempotent: does nothing when `mdbook-xgettext --version` already names the patched build (the
 # unpatched one has no --version). Needs cargo, the crates.io registry and, if `patch` is missing,
 # apt-get. Build jobs: set CARGO_BUILD_JOBS as usual.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-want="mdbook-xgettext 0.4.0+math"
+want="mdbook-xgettext 0.4.0+math+star"
 
 if [ "$(mdbook-xgettext --version </dev/null 2>/dev/null || true)" = "$want" ]; then
   echo "i18n: $want is already installed"
@@ -42,7 +43,7 @@ cargo fetch --quiet --manifest-path "$work/fetch/Cargo.toml"
 crate=$(ls "${CARGO_HOME:-$HOME/.cargo}"/registry/cache/*/mdbook-i18n-helpers-0.4.0.crate | head -n 1)
 tar -xzf "$crate" -C "$work"
 
-patch -p1 --quiet -d "$work/mdbook-i18n-helpers-0.4.0" <"$here/mdbook-i18n-helpers-0.4.0-math.patch"
+patch -p1 --quiet -d "$work/mdbook-i18n-helpers-0.4.0" <"$here/mdbook-i18n-helpers-0.4.0-workbook.patch"
 
 # --locked: the published crate ships its Cargo.lock, so the build uses the versions upstream
 # tested (pulldown-cmark 0.13.0, pulldown-cmark-to-cmark 21.0.0). --force: replaces an unpatched

@@ -24,6 +24,12 @@ pub fn problems(src: &Path) -> Vec<String> {
                     "{at}: a tab character (a lost backslash, as in \\text?)"
                 ));
             }
+            // Math is `$...$` (mdbook-katex's delimiters): `\(...\)` renders as parentheses.
+            if line.contains("\\(") && !line.trim_start().starts_with("{{#") {
+                problems.push(format!(
+                    "{at}: `\\(` is not math here (write $...$ for inline math)"
+                ));
+            }
             for include in includes(line) {
                 if let Err(problem) = check_include(dir, &include) {
                     problems.push(format!("{at}: {{{{#{include}}}}}: {problem}"));

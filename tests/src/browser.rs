@@ -226,18 +226,71 @@ pub struct LivePage {
     pub first_frame: f64,
 }
 
+/// Runs a script in a tab; its value (awaited if a promise) as a string.
+fn evaluate_in(tab: &Tab, script: &str) -> Result<String> {
+    let result = tab
+        .evaluate(script, true)
+        .map_err(|e| anyhow!("script failed: {e}"))?;
+    Ok(match result.value {
+        Some(serde_json::Value::String(text)) => text,
+        Some(other) => other.to_string(),
+        None => result.description.unwrap_or_default(),
+    })
+}
+
+impl WebBrowser {
+    /// Opens any page of the book (not run: a page as a reader first sees it).
+    pub fn page(&self, url: &str) -> Result<BookPage> {
+        let tab = self.browser.new_tab().map_err(|e| anyhow!("no tab: {e}"))?;
+        tab.set_default_timeout(Duration::from_secs(60));
+        tab.navigate_to(url)
+            .and_then(|tab| tab.wait_until_navigated())
+            .map_err(|e| anyhow!("cannot open {url}: {e}"))?;
+        Ok(BookPage { tab })
+    }
+}
+
+/// A page of the book in a tab.
+pub struct BookPage {
+    tab: Arc<Tab>,
+}
+
+impl BookPage {
+    /// Runs a script in the page; its value (awaited if a promise) as a string.
+    pub fn evaluate(&self, script: &str) -> Result<String> {
+        evaluate_in(&self.tab, script)
+    }
+
+    /// Runs a script that makes the page go elsewhere (a click on a link), and waits for the new
+    /// page; its address.
+    pub fn follow(&self, script: &str) -> Result<String> {
+        // The click is run after the script has returned: a script that navigates away from its own
+        // page never returns a value.
+        self.evaluate(&format!("setTimeout(() => {{ {script} }}, 0); 'ok'"))?;
+        std::thread::sleep(Duration::from_millis(300));
+        self.tab
+            .wait_until_navigated()
+            .map_err(|e| anyhow!("no new page: {e}"))?;
+        self.evaluate("location.href")
+    }
+
+    /// A screenshot of the page's viewport as the browser shows it.
+    pub fn screenshot(&self) -> Result<Vec<u8>> {
+        self.tab
+            .capture_screenshot(
+                headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption::Png,
+                None,
+                None,
+                true,
+            )
+            .map_err(|e| anyhow!("no screenshot: {e}"))
+    }
+}
+
 impl LivePage {
     /// Runs a script in the page; its value (awaited if a promise) as a string.
     pub fn evaluate(&self, script: &str) -> Result<String> {
-        let result = self
-            .tab
-            .evaluate(script, true)
-            .map_err(|e| anyhow!("script failed: {e}"))?;
-        Ok(match result.value {
-            Some(serde_json::Value::String(text)) => text,
-            Some(other) => other.to_string(),
-            None => result.description.unwrap_or_default(),
-        })
+        evaluate_in(&self.tab, script)
     }
 
     fn state(&self) -> String {
