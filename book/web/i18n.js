@@ -131,13 +131,20 @@
     });
     const header = document.getElementById("mdbook-searchresults-header");
     if (header) {
-      new MutationObserver(() => {
+      const translate = () => {
         const text = header.textContent;
-        let m = text.match(/^(\d+) search results for '(.*)':$/);
+        let m = text.match(/^(\d+) search results? for '(.*)':$/);
         if (m) header.textContent = sentences.results(m[1], m[2]);
         m = text.match(/^No search results for '(.*)'\.$/);
         if (m) header.textContent = sentences.none(m[1]);
-      }).observe(header, { childList: true, characterData: true, subtree: true });
+      };
+      new MutationObserver(translate).observe(header, {
+        childList: true,
+        characterData: true,
+        subtree: true,
+      });
+      // A search from the page's address (?search=) may have run before this script.
+      translate();
     }
   }
 

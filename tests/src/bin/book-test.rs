@@ -13,7 +13,9 @@
 //! - link the glossary only to terms it has.
 //!
 //! Then, on a lesson page, the language picker in the menu bar goes to the same page in the other
-//! language and back. `--screenshots DIR` writes the picker open on both (default:
+//! language and back, and the search speaks the page's language: it finds an English word, and
+//! where mdBook's search cannot find a Chinese word (it splits the text at spaces) it says what to
+//! use instead. `--screenshots DIR` writes the picker open on both (default:
 //! `target/book-test/`).
 
 use std::path::PathBuf;
@@ -207,6 +209,7 @@ fn run() -> Result<bool> {
             pages.len()
         );
         picker(&chrome, &site, language, &args, &mut failures)?;
+        search(&chrome, &site, language, &mut failures)?;
     }
     for failure in &failures {
         eprintln!("book-test: {failure}");
@@ -215,6 +218,43 @@ fn run() -> Result<bool> {
         println!("book-test: every translated page renders its math, listings and figures");
     }
     Ok(failures.is_empty())
+}
+
+/// The search box of a translated lesson page, asked for an English word and for a Chinese one
+/// (through `?search=`, as mdBook's own links to results do): its results header, in the page's
+/// language.
+fn search(
+    chrome: &WebBrowser,
+    site: &str,
+    language: &str,
+    failures: &mut Vec<String>,
+) -> Result<()> {
+    // What the header must say: results for an English word; for a word inside Chinese sentences,
+    // none, and the way to find it (the print page and the browser's find).
+    let cases = [("stencil", "找到"), ("模板缓冲区", "Ctrl+F")];
+    for (term, expected) in cases {
+        let query: String = term.bytes().map(|b| format!("%{b:02X}")).collect();
+        let page = chrome.page(&format!("{site}/{language}/{PICKER_PAGE}?search={query}"))?;
+        let header = page.evaluate(
+            r"new Promise((resolve) => {
+                 const t0 = performance.now();
+                 (function poll() {
+                     const h = document.getElementById('mdbook-searchresults-header');
+                     const text = h ? h.textContent : '';
+                     if (/[\u4e00-\u9fff]/.test(text) || performance.now() - t0 > 20000) resolve(text);
+                     else setTimeout(poll, 50);
+                 })();
+             })",
+        )?;
+        if !header.contains(expected) {
+            failures.push(format!(
+                "{language}/{PICKER_PAGE}?search={term}: the results header says {header:?}"
+            ));
+        } else {
+            println!("search for {term:?}: {header}");
+        }
+    }
+    Ok(())
 }
 
 /// The listings with their shell comments taken out: a command's comment (`cargo run  # a window`)
