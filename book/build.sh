@@ -54,7 +54,9 @@ for po in po/*.po; do
   fi
   # The book's title is no message of any page: it is the .po header's X-Book-Title.
   title=$(sed -n 's/^"X-Book-Title: \(.*\)\\n"$/\1/p' "$po")
-  build "$work/$language" MDBOOK_BOOK__LANGUAGE="$language" ${title:+MDBOOK_BOOK__TITLE="$title"}
+  settings=(MDBOOK_BOOK__LANGUAGE="$language")
+  [ -z "$title" ] || settings+=(MDBOOK_BOOK__TITLE="$title")
+  build "$work/$language" "${settings[@]}"
   if grep -rl 'katex-error' "$work/$language/html" --include=*.html; then
     echo "book: KaTeX errors in the $language book (the pages above)" >&2
     exit 1

@@ -238,6 +238,20 @@ fn evaluate_in(tab: &Tab, script: &str) -> Result<String> {
     })
 }
 
+/// A PNG of what a tab shows: the page's viewport, or the `clip` rectangle of the page.
+fn screenshot_of(
+    tab: &Tab,
+    clip: Option<headless_chrome::protocol::cdp::Page::Viewport>,
+) -> Result<Vec<u8>> {
+    tab.capture_screenshot(
+        headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption::Png,
+        None,
+        clip,
+        true,
+    )
+    .map_err(|e| anyhow!("no screenshot: {e}"))
+}
+
 impl WebBrowser {
     /// Opens any page of the book (not run: a page as a reader first sees it).
     pub fn page(&self, url: &str) -> Result<BookPage> {
@@ -276,14 +290,7 @@ impl BookPage {
 
     /// A screenshot of the page's viewport as the browser shows it.
     pub fn screenshot(&self) -> Result<Vec<u8>> {
-        self.tab
-            .capture_screenshot(
-                headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption::Png,
-                None,
-                None,
-                true,
-            )
-            .map_err(|e| anyhow!("no screenshot: {e}"))
+        screenshot_of(&self.tab, None)
     }
 }
 
@@ -397,14 +404,7 @@ impl LivePage {
                 scale: 1.0,
             }
         });
-        self.tab
-            .capture_screenshot(
-                headless_chrome::protocol::cdp::Page::CaptureScreenshotFormatOption::Png,
-                None,
-                clip,
-                true,
-            )
-            .map_err(|e| anyhow!("no screenshot: {e}"))
+        screenshot_of(&self.tab, clip)
     }
 
     /// The "same on your machine" line the page shows.
