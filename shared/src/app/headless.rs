@@ -145,6 +145,7 @@ pub struct Headless<L: Lesson> {
 
 impl<L: Lesson> Headless<L> {
     pub fn new(request: &Request) -> Result<Self> {
+        let scene = request.scene.start_reading();
         let gpu = Gpu::shared_headless(request.backend.as_deref(), request.verbose)?;
         check_size(&gpu, request.width, request.height)?;
         if (request.read_stencil || request.read_depth) && !gpu.can_copy_depth_stencil() {
@@ -158,7 +159,7 @@ impl<L: Lesson> Headless<L> {
             let mut runner = Runner::<L>::new(
                 gpu,
                 HEADLESS_FORMAT,
-                &request.scene,
+                scene,
                 request.knobs.clone(),
                 request.camera,
                 size,

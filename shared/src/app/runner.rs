@@ -32,7 +32,7 @@ impl<L: Lesson> Runner<L> {
     pub fn new(
         gpu: Arc<Gpu>,
         color_format: wgpu::TextureFormat,
-        scene: &crate::room::scene::SceneOptions,
+        scene: crate::room::scene::SceneReading,
         knobs: Knobs,
         camera: Camera,
         (width, height): (u32, u32),

@@ -23,6 +23,7 @@ use crate::lesson::Lesson;
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::Stop;
 use crate::room::camera::Camera;
+use crate::room::scene::SceneReading;
 
 /// Opens the lesson in a window and runs until it is closed (or `--frames` frames were shown).
 pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
@@ -41,6 +42,8 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
     })?;
     let mut app = App::<L> {
         args,
+        // Read while the window and the GPU open.
+        scene: Some(args.scene().start_reading()),
         knobs: Some(knobs),
         camera,
         backends: gpu::backend_choices(args.backend.as_deref())?,
@@ -59,6 +62,7 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
 
 struct App<'a, L: Lesson> {
     args: &'a Args,
+    scene: Option<SceneReading>,
     knobs: Option<Knobs>,
     camera: Camera,
     backends: Vec<wgpu::Backends>,
@@ -117,10 +121,11 @@ impl<L: Lesson> App<'_, L> {
         check_size(&gpu, config.width, config.height)?;
         surface.configure(&gpu.device, &config);
         let knobs = self.knobs.take().context("the window was opened twice")?;
+        let scene = self.scene.take().context("the window was opened twice")?;
         let runner = Runner::new(
             std::sync::Arc::new(gpu),
             config.format,
-            &self.args.scene(),
+            scene,
             knobs,
             self.camera,
             (config.width, config.height),

@@ -6,10 +6,9 @@
 use std::path::Path;
 
 use anyhow::Result;
-use image::RgbaImage;
 
 use crate::room::mesh::MeshData;
-use crate::room::texture;
+use crate::room::texture::{self, Mipmapped};
 
 /// The skull's file in the assets folder.
 pub const MODEL_FILE: &str = "skull.obj";
@@ -29,23 +28,36 @@ pub const TEXTURE_FILES: [&str; 6] = [
 pub struct Assets {
     /// The skull, or the model `--model` names.
     pub model: MeshData,
-    /// The textures of [`TEXTURE_FILES`], in that order.
-    pub textures: [RgbaImage; 6],
+    /// The textures of [`TEXTURE_FILES`], in that order, with their mipmaps.
+    pub textures: [Mipmapped; 6],
 }
 
 impl Assets {
-    /// Reads the assets from the folder `assets`, the model from `model` if given.
+    /// Reads the assets from the folder `assets`, the model from `model` if given: the textures
+    /// on a thread of their own, beside the model (each takes about as long).
     #[cfg(not(target_arch = "wasm32"))]
     pub fn load(assets: &Path, model: Option<&Path>) -> Result<Self> {
         let model_path = model.map_or_else(|| assets.join(MODEL_FILE), Path::to_path_buf);
-        let model = MeshData::load_obj(&model_path)?;
-        let mut textures = Vec::with_capacity(TEXTURE_FILES.len());
-        for name in TEXTURE_FILES {
-            textures.push(texture::load_png(&assets.join(name))?);
-        }
+        let load_textures = || -> Result<Vec<Mipmapped>> {
+            let load = |name| Ok(Mipmapped::new(texture::load_png(&assets.join(name))?));
+            TEXTURE_FILES.iter().map(load).collect()
+        };
+        let (model, textures) = std::thread::scope(|scope| {
+            let textures = std::thread::Builder::new()
+                .name("textures".into())
+                .spawn_scoped(scope, load_textures);
+            let model = MeshData::load_obj(&model_path);
+            let textures = match textures {
+                Ok(thread) => thread
+                    .join()
+                    .unwrap_or_else(|p| std::panic::resume_unwind(p)),
+                Err(_) => load_textures(),
+            };
+            (model, textures)
+        });
         Ok(Self {
-            model,
-            textures: textures.try_into().expect("one picture per texture file"),
+            model: model?,
+            textures: textures?.try_into().expect("one picture per texture file"),
         })
     }
 
@@ -55,7 +67,7 @@ impl Assets {
         let model = MeshData::parse_obj(model_name, model)?;
         let mut decoded = Vec::with_capacity(TEXTURE_FILES.len());
         for (name, bytes) in TEXTURE_FILES.iter().zip(textures) {
-            decoded.push(texture::decode_png(name, bytes)?);
+            decoded.push(Mipmapped::new(texture::decode_png(name, bytes)?));
         }
         Ok(Self {
             model,

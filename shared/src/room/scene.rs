@@ -18,7 +18,7 @@ use crate::gpu::pipelines::{Pipelines, Stages};
 use crate::gpu::states::{Clip, Recipe};
 use crate::math::reflect::{Plane, normal_matrix, reflection};
 use crate::math::shadow::LightSource;
-use crate::room::assets::Assets;
+use crate::room::assets::{Assets, TEXTURE_FILES};
 use crate::room::camera::{FAR, NEAR, View};
 use crate::room::mesh::{GpuMesh, MeshData, Vertex};
 use crate::room::texture;
@@ -468,23 +468,65 @@ pub struct Scene {
     pub pipelines: Pipelines,
 }
 
+impl SceneOptions {
+    /// Starts reading the assets on a thread of their own: call it before opening the GPU, and
+    /// [`Scene::new`] builds the room once both are done.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn start_reading(&self) -> SceneReading {
+        let (assets, model) = (self.assets.clone(), self.model.clone());
+        let thread = std::thread::Builder::new()
+            .name("assets".into())
+            .spawn(move || {
+                let start = std::time::Instant::now();
+                let assets = Assets::load(&assets, model.as_deref());
+                log::info!(
+                    target: crate::gpu::STARTUP,
+                    "model and textures read, mipmaps made, in {:.0?} (beside the GPU's opening)",
+                    start.elapsed()
+                );
+                assets
+            });
+        SceneReading {
+            assets: thread.map_err(Into::into),
+            anisotropy: self.anisotropy,
+        }
+    }
+}
+
+/// A room whose assets are being read on a thread of their own ([`SceneOptions::start_reading`]).
+/// Start-up's two longest phases run side by side: reading the assets (the skull's 1.7 MB of OBJ
+/// text, six PNGs) and opening the GPU (mostly loading the Vulkan driver and, for a software GPU,
+/// LLVM).
+#[cfg(not(target_arch = "wasm32"))]
+pub struct SceneReading {
+    assets: anyhow::Result<std::thread::JoinHandle<anyhow::Result<Assets>>>,
+    anisotropy: u16,
+}
+
 impl Scene {
-    /// The room with the assets `options` names, read from their files.
+    /// The room, once its assets are read.
     #[cfg(not(target_arch = "wasm32"))]
     pub fn new(
         gpu: &Gpu,
         color_format: wgpu::TextureFormat,
-        options: &SceneOptions,
+        reading: SceneReading,
     ) -> anyhow::Result<Self> {
         let start = std::time::Instant::now();
-        let assets = Assets::load(&options.assets, options.model.as_deref())?;
-        let read = start.elapsed();
-        log::info!(target: crate::gpu::STARTUP, "model and textures read in {read:.0?}");
-        let scene = Self::with_assets(gpu, color_format, &assets, options.anisotropy);
+        let assets = match reading.assets {
+            Ok(thread) => thread
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))?,
+            Err(error) => {
+                return Err(error.context("cannot start a thread to read the assets"));
+            }
+        };
+        let waited = start.elapsed();
+        log::info!(target: crate::gpu::STARTUP, "waited {waited:.0?} for the model and textures");
+        let scene = Self::with_assets(gpu, color_format, &assets, reading.anisotropy);
         log::info!(
             target: crate::gpu::STARTUP,
-            "room built (meshes, textures and their mipmaps uploaded) in {:.0?}",
-            start.elapsed() - read
+            "room built (meshes and textures uploaded) in {:.0?}",
+            start.elapsed() - waited
         );
         Ok(scene)
     }
@@ -498,7 +540,6 @@ impl Scene {
     ) -> Self {
         let (adapter, device, queue) = (&gpu.adapter, &gpu.device, &gpu.queue);
         let skull_mesh = &assets.model;
-        let [checker, bricks, ice, crate_image, fence_image, water_image] = &assets.textures;
 
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("frame bind group layout"),
@@ -551,15 +592,27 @@ impl Scene {
             anisotropy_clamp: anisotropy,
             ..Default::default()
         });
-        let white = image::RgbaImage::from_pixel(1, 1, image::Rgba([255; 4]));
+        // Each picture uploaded once (the floor and the floor mirror share theirs).
+        let [checker, bricks, ice, crate_image, fence_image, water_image] =
+            std::array::from_fn(|i| {
+                let name = TEXTURE_FILES[i].trim_end_matches(".png");
+                texture::upload(
+                    device,
+                    queue,
+                    &format!("{name} texture"),
+                    &assets.textures[i],
+                )
+            });
+        let white =
+            texture::Mipmapped::new(image::RgbaImage::from_pixel(1, 1, image::Rgba([255; 4])));
+        let white = texture::upload(device, queue, "white texture", &white);
 
         let object = |name: &'static str,
                       mesh: &MeshData,
                       world: Mat4,
                       material: Material,
-                      picture: &image::RgbaImage,
+                      view: &wgpu::TextureView,
                       repeat: Vec2| {
-            let view = texture::upload(device, queue, &format!("{name} texture"), picture);
             let make = |label: String, world: Mat4| {
                 let uniform = ObjectUniform {
                     world,
@@ -570,7 +623,7 @@ impl Scene {
                     params: Vec4::new(repeat.x, repeat.y, material.alpha_cutoff, 0.0),
                 };
                 let (buffer, group) =
-                    object_bind_group(device, &object_layout, &sampler, &view, &label, &uniform);
+                    object_bind_group(device, &object_layout, &sampler, view, &label, &uniform);
                 (group, (buffer, Cell::new(uniform)))
             };
             let (bind_group, normal) = make(name.to_string(), world);
@@ -582,7 +635,7 @@ impl Scene {
                 bind_group,
                 reflected,
                 uniforms: [normal, mirrored],
-                texture: view,
+                texture: view.clone(),
                 local_centre: (min + max) / 2.0,
             }
         };
@@ -592,7 +645,7 @@ impl Scene {
             &floor_mesh(),
             Mat4::IDENTITY,
             ROOM_MATERIAL,
-            checker,
+            &checker,
             Vec2::ONE,
         );
         let wall = object(
@@ -600,7 +653,7 @@ impl Scene {
             &wall_mesh(),
             Mat4::IDENTITY,
             ROOM_MATERIAL,
-            bricks,
+            &bricks,
             Vec2::ONE,
         );
         let mirror = object(
@@ -608,7 +661,7 @@ impl Scene {
             &mirror_mesh(),
             Mat4::IDENTITY,
             MIRROR_MATERIAL,
-            ice,
+            &ice,
             Vec2::ONE,
         );
         let crate_box = object(
@@ -616,7 +669,7 @@ impl Scene {
             &MeshData::cuboid(Vec3::splat(CRATE_SIZE)),
             Mat4::from_translation(CRATE_CENTRE),
             ROOM_MATERIAL,
-            crate_image,
+            &crate_image,
             Vec2::ONE,
         );
         let skull = object(
@@ -632,7 +685,7 @@ impl Scene {
             &MeshData::cuboid(Vec3::splat(FENCE_SIZE)),
             Mat4::from_translation(FENCE_CENTRE),
             FENCE_MATERIAL,
-            fence_image,
+            &fence_image,
             Vec2::ONE,
         );
         let water_size = WATER_MAX - WATER_MIN;
@@ -648,7 +701,7 @@ impl Scene {
             &water_mesh,
             Mat4::IDENTITY,
             WATER_MATERIAL,
-            water_image,
+            &water_image,
             Vec2::ONE,
         );
         let floor_mirror = object(
@@ -656,7 +709,7 @@ impl Scene {
             &floor_mirror_mesh(),
             Mat4::IDENTITY,
             FLOOR_MIRROR_MATERIAL,
-            ice,
+            &ice,
             Vec2::ONE,
         );
         let floor_around_mirror = object(
@@ -664,7 +717,7 @@ impl Scene {
             &floor_around_mirror_mesh(),
             Mat4::IDENTITY,
             ROOM_MATERIAL,
-            checker,
+            &checker,
             Vec2::ONE,
         );
         let depth_view = crate::gpu::views::DepthViewPipelines::supported(adapter)

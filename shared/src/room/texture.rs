@@ -28,19 +28,69 @@ pub fn decode_png(name: &str, bytes: &[u8]) -> Result<RgbaImage> {
     Ok(image.to_rgba8())
 }
 
-/// Uploads an image with its full mipmap chain; returns a view of it.
+/// A picture with its mipmap chain: the picture, then each half-size level below it, down to 1×1.
+/// Made when the picture is decoded (on the assets' own thread at start-up, while the GPU opens).
+#[derive(Debug, Clone)]
+pub struct Mipmapped {
+    pub levels: Vec<RgbaImage>,
+}
+
+impl Mipmapped {
+    /// The picture with its chain. Each texel of a level averages 2×2 texels of the one above in
+    /// linear light (averaging sRGB numbers would darken the distance).
+    pub fn new(image: RgbaImage) -> Self {
+        // Decoding is the inner loop: 256 values, so look them up.
+        let decode: [f32; 256] = std::array::from_fn(|v| srgb_to_linear(v as u8));
+        let mut levels = vec![image];
+        while let Some(above) = levels.last().filter(|l| l.width() > 1 || l.height() > 1) {
+            levels.push(half_size(above, &decode));
+        }
+        Self { levels }
+    }
+}
+
+/// The level below `above`: each texel the linear-light average of the 2×2 above it (clamped at an
+/// odd edge). Read from the raw bytes: a debug build spends its start-up here otherwise.
+fn half_size(above: &RgbaImage, decode: &[f32; 256]) -> RgbaImage {
+    let (width, height) = above.dimensions();
+    let (w, h) = ((width / 2).max(1), (height / 2).max(1));
+    let raw = above.as_raw();
+    let texel = |x: u32, y: u32| {
+        let i = 4 * (y.min(height - 1) as usize * width as usize + x.min(width - 1) as usize);
+        &raw[i..i + 4]
+    };
+    let mut texels = Vec::with_capacity(4 * w as usize * h as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let mut sum = [0.0f32; 4];
+            for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                let p = texel(2 * x + dx, 2 * y + dy);
+                for c in 0..3 {
+                    sum[c] += decode[p[c] as usize];
+                }
+                sum[3] += p[3] as f32 / 255.0;
+            }
+            let rgb = [0, 1, 2].map(|c| linear_to_srgb(sum[c] / 4.0));
+            texels.extend_from_slice(&rgb);
+            texels.push((sum[3] / 4.0 * 255.0).round() as u8);
+        }
+    }
+    RgbaImage::from_raw(w, h, texels).expect("four bytes per texel")
+}
+
+/// Uploads a picture with its mipmap chain; returns a view of it.
 pub fn upload(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
     name: &str,
-    image: &RgbaImage,
+    picture: &Mipmapped,
 ) -> wgpu::TextureView {
-    let levels = mip_chain(image);
+    let levels = &picture.levels;
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some(name),
         size: wgpu::Extent3d {
-            width: image.width(),
-            height: image.height(),
+            width: levels[0].width(),
+            height: levels[0].height(),
             depth_or_array_layers: 1,
         },
         mip_level_count: levels.len() as u32,
@@ -77,33 +127,6 @@ pub fn upload(
     })
 }
 
-/// The image and each half-size level below it, down to 1×1. Each texel of a level averages 2×2
-/// texels of the one above in linear light (averaging sRGB numbers would darken the distance).
-fn mip_chain(image: &RgbaImage) -> Vec<RgbaImage> {
-    // Decoding is the inner loop: 256 values, so look them up.
-    let decode: [f32; 256] = std::array::from_fn(|v| srgb_to_linear(v as u8));
-    let mut levels = vec![image.clone()];
-    while let Some(above) = levels.last().filter(|l| l.width() > 1 || l.height() > 1) {
-        let (w, h) = ((above.width() / 2).max(1), (above.height() / 2).max(1));
-        let next = RgbaImage::from_fn(w, h, |x, y| {
-            let mut sum = [0.0f32; 4];
-            for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-                let sx = (2 * x + dx).min(above.width() - 1);
-                let sy = (2 * y + dy).min(above.height() - 1);
-                let p = above.get_pixel(sx, sy).0;
-                for c in 0..3 {
-                    sum[c] += decode[p[c] as usize];
-                }
-                sum[3] += p[3] as f32 / 255.0;
-            }
-            let rgb = [0, 1, 2].map(|c| linear_to_srgb(sum[c] / 4.0));
-            image::Rgba([rgb[0], rgb[1], rgb[2], (sum[3] / 4.0 * 255.0).round() as u8])
-        });
-        levels.push(next);
-    }
-    levels
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -115,7 +138,7 @@ mod tests {
             let v = if x % 2 == 0 { 0 } else { 255 };
             image::Rgba([v, v, v, 255])
         });
-        let levels = mip_chain(&image);
+        let levels = Mipmapped::new(image).levels;
         assert_eq!(levels.len(), 3);
         assert_eq!(levels[2].dimensions(), (1, 1));
         assert_eq!(levels[1].get_pixel(0, 0).0, [188, 188, 188, 255]);

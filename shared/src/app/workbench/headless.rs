@@ -27,12 +27,13 @@ impl<L: Lesson> HeadlessWorkbench<L> {
     /// The lesson as `args` set it up (`--size`, `--set`, `--camera`, `--ui-scale`,
     /// `--backend`), its window's surface replaced by a texture of the headless colour format.
     pub fn new(args: &Args) -> Result<Self> {
+        let scene = args.scene().start_reading();
         let gpu = Gpu::shared_headless(args.backend.as_deref(), args.verbose)?;
         let knobs = Knobs::from_settings(L::KNOBS, &args.settings)?;
         let runner = Runner::<L>::new(
             gpu,
             HEADLESS_FORMAT,
-            &args.scene(),
+            scene,
             knobs,
             args.camera::<L>()?,
             args.size,
