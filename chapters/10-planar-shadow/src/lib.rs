@@ -209,7 +209,8 @@ impl Lesson for PlanarShadow {
             let image = mirror_world.reflection * world;
             scene.placed_as(device, &scene.skull, image, Some(SHADOW_MATERIAL))
         });
-        let pipeline = |recipe: &Recipe| scene.pipeline(device, recipe);
+        // Pipelines that shade by point and spot lights too.
+        let pipeline = |recipe: &Recipe| scene.pipeline_lit_by(device, recipe, &lights);
         Ok(Self {
             lights,
             room_frame: scene.frame_binding(device, "lit room"),

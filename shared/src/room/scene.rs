@@ -753,14 +753,35 @@ impl Scene {
         self.clip_distances_shader.is_some()
     }
 
-    /// Bakes a recipe into a pipeline that draws the room's objects. A recipe that clips with
+    /// Bakes a recipe into a pipeline that draws the room's objects lit by directional lights:
+    /// Luna's three ([`LIGHTS`]), or their mirror images. A recipe that clips with
     /// [`Clip::Distances`] on a device without them falls back to the unclipped shader: check
     /// [`Scene::has_clip_distances`] first.
     pub fn pipeline(&self, device: &wgpu::Device, recipe: &Recipe) -> wgpu::RenderPipeline {
+        self.pipeline_lit_by(device, recipe, &LIGHTS)
+    }
+
+    /// [`Scene::pipeline`] for a frame lit by `lights`: where one of them is a point or a spot
+    /// light, the shader that lights by those too (it costs a software GPU a seventh of its frame
+    /// more: [`Scene::pipeline`] leaves that code out). Clipping by discarding
+    /// ([`Clip::Discard`]) shades by directional lights only.
+    pub fn pipeline_lit_by(
+        &self,
+        device: &wgpu::Device,
+        recipe: &Recipe,
+        lights: &[Light; 3],
+    ) -> wgpu::RenderPipeline {
+        let directional = |light: &Light| {
+            matches!(light.source, LightSource::Directional { .. }) && light.spot.is_none()
+        };
+        let shade = match lights.iter().all(directional) {
+            true => "fs_main",
+            false => "fs_any_light",
+        };
         let (module, vertex, fragment) = match (recipe.clip, &self.clip_distances_shader) {
-            (Clip::Distances, Some(clipping)) => (clipping, "vs_clip_distances", "fs_main"),
+            (Clip::Distances, Some(clipping)) => (clipping, "vs_clip_distances", shade),
             (Clip::Discard, _) => (&self.shader, "vs_main", "fs_discard"),
-            _ => (&self.shader, "vs_main", "fs_main"),
+            _ => (&self.shader, "vs_main", shade),
         };
         let stages = (module, vertex, fragment);
         self.pipeline_from(device, recipe, &self.pipeline_layout, stages)

@@ -83,7 +83,21 @@ fn fs_discard(in: VertexOut) -> @location(0) vec4<f32> {
 }
 // ANCHOR_END: discard
 
+// Lit by points and spots as well as directional lights (lesson 10's key light).
+@fragment
+fn fs_any_light(in: VertexOut) -> @location(0) vec4<f32> {
+    return shade_lit_by(in, true);
+}
+
+// Lit by directional lights only: Luna's three, as every lesson but lesson 10 lights the room.
 fn shade(in: VertexOut) -> vec4<f32> {
+    return shade_lit_by(in, false);
+}
+
+// `points`: whether the frame's lights may be point or spot lights. Where it is `false` the
+// compiler leaves their code out, and it costs nothing: a software GPU runs both sides of every
+// branch, and that code took a seventh of its frame.
+fn shade_lit_by(in: VertexOut, points: bool) -> vec4<f32> {
     let texel = textureSample(base_texture, base_sampler, in.uv);
     let alpha = texel.a * object.diffuse.a;
     if object.params.z > 0.0 && texel.a < object.params.z {
@@ -98,7 +112,7 @@ fn shade(in: VertexOut) -> vec4<f32> {
         let light = frame.lights[i];
         var to_light = -normalize(light.position.xyz);
         var strength = 1.0;
-        if light.position.w > 0.5 {
+        if points && light.position.w > 0.5 {
             // A point light: from where it is, fading with the distance (Luna's 1 / (a0 + a2 d²)).
             let offset = light.position.xyz - in.world_position;
             to_light = normalize(offset);
