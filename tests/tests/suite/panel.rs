@@ -345,3 +345,62 @@ fn half_resolution_draws_a_quarter_of_the_pixels() {
     half.frame().unwrap();
     assert_eq!(half.runner.depth_stencil.size(), (320, 180));
 }
+
+/// The window shows the lesson beside its panel pixel for pixel: in the first frame (laid out and
+/// painted) and in idle ones (the view and the panel's picture copied into place), the view is the
+/// headless render at the view's size, of whichever buffer it shows; the panel is beside it.
+#[test]
+fn the_view_beside_the_panel_is_the_lessons_render() {
+    use reflect_skull::ReflectSkull;
+    use workbook::app::args::Args;
+    use workbook::app::workbench::headless::HeadlessWorkbench;
+
+    for (show, shown) in [("color", Show::Color), ("stencil", Show::Stencil)] {
+        let arguments = [
+            "reflect-skull",
+            "--size",
+            "640x360",
+            "--resolution",
+            "full",
+            "--show",
+            show,
+        ];
+        let args = Args::parse_for::<ReflectSkull>(arguments).unwrap();
+        let mut bench = HeadlessWorkbench::<ReflectSkull>::new(&args).unwrap();
+        bench.frame().unwrap();
+        let first = bench.picture().unwrap();
+        // egui animates the panel in for a fraction of a second: the first frame after it that is
+        // not laid out again.
+        let start = std::time::Instant::now();
+        loop {
+            let before = bench.workbench.layouts;
+            bench.frame().unwrap();
+            if bench.workbench.layouts == before {
+                break;
+            }
+            assert!(start.elapsed().as_secs() < 10, "{show}: no idle frame");
+        }
+        let idle = bench.picture().unwrap();
+        let (width, height) = bench.workbench.view_size();
+        assert!(width < 640 && height == 360, "a view beside the panel");
+        let mut request = Request::new::<ReflectSkull>(&[] as &[&str]).unwrap();
+        (request.width, request.height, request.show) = (width, height, shown);
+        let lesson = workbook::app::headless::render::<ReflectSkull>(&request)
+            .unwrap()
+            .color;
+        for (frame, picture) in [("first", &first), ("idle", &idle)] {
+            let view = image::imageops::crop_imm(picture, 0, 0, width, height).to_image();
+            assert!(
+                view == lesson,
+                "{show}, {frame} frame: the view is not the lesson's render"
+            );
+            let panel = image::imageops::crop_imm(picture, width, 0, 640 - width, height);
+            let panel = panel.to_image();
+            let lit = panel.pixels().filter(|p| p.0[..3] != [0, 0, 0]).count();
+            assert!(
+                lit > 1000,
+                "{show}, {frame} frame: no panel beside the view"
+            );
+        }
+    }
+}

@@ -98,6 +98,14 @@ impl<L: Lesson> HeadlessWorkbench<L> {
         })
     }
 
+    /// The last frame's picture, as the window would show it: the view and the panel beside it.
+    pub fn picture(&self) -> Result<image::RgbaImage> {
+        let all = wgpu::TextureAspect::All;
+        let bytes = crate::app::headless::read_texture(&self.runner.gpu, &self.target, all, 4)?;
+        image::RgbaImage::from_raw(self.size.0, self.size.1, bytes)
+            .context("the workbench's picture has the wrong size")
+    }
+
     /// What the panel's cost section shows after the last frame.
     pub fn cost(&self) -> Option<&Cost> {
         self.workbench.cost()

@@ -46,9 +46,10 @@ pub struct Viewing {
 /// The three buffers of the view, painted to be seen, each an egui texture.
 struct Buffers {
     size: (u32, u32),
-    /// The colours' texture (a pixel's story is read through it).
-    color: wgpu::Texture,
-    /// Colour, depth, stencil.
+    /// Colour, depth, stencil pictures (copied into the window, and a pixel's story reads the
+    /// colours through the first).
+    textures: [wgpu::Texture; 3],
+    /// Views of the same.
     views: [wgpu::TextureView; 3],
     /// The same, as egui samples them (sRGB-encoded values, not decoded).
     encoded: [wgpu::TextureView; 3],
@@ -253,7 +254,7 @@ impl<L: Lesson> Workbench<L> {
             return;
         }
         let settings = runner.knobs.changed();
-        let story = crate::app::pixel::story(runner, &self.buffers.color, pixel, settings);
+        let story = crate::app::pixel::story(runner, &self.buffers.textures[0], pixel, settings);
         self.story = Some((key, story.map_err(|error| format!("{error:#}"))));
         self.story_at = Instant::now();
     }
@@ -318,10 +319,6 @@ impl<L: Lesson> Workbench<L> {
         let start = Instant::now();
         let raw_input = input;
         let size = (target.width(), target.height());
-        let target_view = target.create_view(&wgpu::TextureViewDescriptor {
-            label: Some("workbench target"),
-            ..Default::default()
-        });
         self.tell_story(runner);
         // The step names as the last frame recorded them, unless what they follow changed: asking
         // the lesson records a frame of no steps, an encoder made and dropped every frame.
@@ -483,8 +480,6 @@ impl<L: Lesson> Workbench<L> {
             self.pictures_for = Some(key);
             self.pictures_at = Instant::now();
         }
-        // The view, pixel for pixel, by a plain copy (through egui's shader it cost a software GPU
-        // 29 ms a frame at 1280x720); then the panel over the rest.
         let viewport = [
             (view_rect.min.x * ppp).round(),
             (view_rect.min.y * ppp).round(),
@@ -493,19 +488,6 @@ impl<L: Lesson> Workbench<L> {
         ];
         let fits = viewport[0] + viewport[2] <= size.0 as f32
             && viewport[1] + viewport[3] <= size.1 as f32;
-        let shown = &self.buffers.views[match viewing.show {
-            Show::Color => 0,
-            Show::Depth | Show::RawDepth => 1,
-            Show::Stencil => 2,
-        }];
-        let blit = &runner.scene.blit;
-        blit.draw_in(
-            &runner.gpu.device,
-            &mut encoder,
-            shown,
-            &target_view,
-            fits.then_some(viewport),
-        );
         // The panel. egui's shader costs a software GPU 12 ms a frame for the panel's 330x720
         // pixels alone, so the panel is painted into a picture of its own when it changed (a
         // hover, a knob, the small buffers and the cost twice a second) and copied beside
@@ -528,6 +510,39 @@ impl<L: Lesson> Workbench<L> {
                 .intersect(clipped.clip_rect);
             !bounds.is_positive() || panel.expand(0.5).contains_rect(bounds)
         });
+        let copy_dst = target.usage().contains(wgpu::TextureUsages::COPY_DST);
+        let panel_copied = idle || (fits && inside && copy_dst);
+        // The view, pixel for pixel. Where the view and the panel's picture tile the target, by two
+        // copies: a render pass (with its bind group) more cost a fast GPU a tenth of a millisecond
+        // a frame, the panel's whole added cost. Otherwise (half resolution, a view that does not
+        // fit) drawn, the rest cleared. (Through egui's shader the view cost a software GPU 29 ms
+        // a frame at 1280x720.)
+        let shown = match viewing.show {
+            Show::Color => 0,
+            Show::Depth | Show::RawDepth => 1,
+            Show::Stencil => 2,
+        };
+        let tiles = panel_copied
+            && self.scale() == 1
+            && viewport[..2] == [0.0, 0.0]
+            && (panel_left, size.1) == view_size;
+        if tiles {
+            let whole = wgpu::Extent3d {
+                width: view_size.0,
+                height: view_size.1,
+                depth_or_array_layers: 1,
+            };
+            let source = &self.buffers.textures[shown];
+            encoder.copy_texture_to_texture(source.as_image_copy(), target.as_image_copy(), whole);
+        } else {
+            runner.scene.blit.draw_in(
+                &runner.gpu.device,
+                &mut encoder,
+                &self.buffers.views[shown],
+                &target_view(target),
+                fits.then_some(viewport),
+            );
+        }
         let mut textures = output.textures_delta;
         self.update_textures(runner, &textures);
         if idle {
@@ -541,7 +556,7 @@ impl<L: Lesson> Workbench<L> {
             if let Some(picture) = &self.panel_picture {
                 picture.copy(&mut encoder, target, panel_left);
             }
-        } else if fits && inside && target.usage().contains(wgpu::TextureUsages::COPY_DST) {
+        } else if panel_copied {
             let stale = due
                 || !textures.is_empty()
                 || self.panel_picture.as_ref().is_none_or(|picture| {
@@ -574,7 +589,8 @@ impl<L: Lesson> Workbench<L> {
             }
         } else {
             self.panel_picture = None;
-            self.paint(runner, &mut encoder, output.shapes, ppp, &target_view, size);
+            let target = target_view(target);
+            self.paint(runner, &mut encoder, output.shapes, ppp, &target, size);
         }
         for id in &textures.free {
             self.renderer.free_texture(id);
@@ -865,6 +881,14 @@ pub fn set_knobs<L: Lesson>(
 }
 
 /// `rect` with its corners moved to whole pixels.
+/// A view of the workbench's target, for the passes that draw into it.
+fn target_view(target: &wgpu::Texture) -> wgpu::TextureView {
+    target.create_view(&wgpu::TextureViewDescriptor {
+        label: Some("workbench target"),
+        ..Default::default()
+    })
+}
+
 fn pixel_rect(rect: egui::Rect, pixels_per_point: f32) -> egui::Rect {
     let round =
         |p: egui::Pos2| (p.to_vec2() * pixels_per_point).round().to_pos2() / pixels_per_point;
@@ -985,7 +1009,9 @@ impl Buffers {
         // egui samples its textures as sRGB-encoded values: it gets views of the same texels
         // without the sRGB decoding (through an sRGB view the thumbnails came out too dark).
         let encoded = format.remove_srgb_suffix();
-        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
+            | wgpu::TextureUsages::TEXTURE_BINDING
+            | wgpu::TextureUsages::COPY_SRC;
         let texture = |label, usage| {
             gpu.device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
@@ -1002,16 +1028,13 @@ impl Buffers {
                 view_formats: &[encoded],
             })
         };
-        // The colours are copied from too: a pixel's story reads them.
-        let color = texture("workbench colour", usage | wgpu::TextureUsages::COPY_SRC);
         let textures = [
-            color.clone(),
+            texture("workbench colour", usage),
             texture("workbench depth picture", usage),
             texture("workbench stencil picture", usage),
         ];
         Self {
             size,
-            color,
             views: textures
                 .each_ref()
                 .map(|t| t.create_view(&Default::default())),
@@ -1022,6 +1045,7 @@ impl Buffers {
                     ..Default::default()
                 })
             }),
+            textures,
         }
     }
 }
