@@ -4,7 +4,7 @@
 use std::ffi::OsString;
 use std::process::ExitCode;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 
 use crate::app::args::Args;
 use crate::lesson::Lesson;
@@ -32,8 +32,7 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         Ok(args) => args,
         Err(error) if !error.use_stderr() => {
             // --help and --version: not errors.
-            print!("{error}");
-            return Ok(());
+            return say(error);
         }
         Err(error) => {
             let text = error.to_string();
@@ -51,8 +50,7 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
     };
     init_logging(args.verbose);
     if args.list_knobs {
-        print!("{}", knobs::describe(L::KNOBS));
-        return Ok(());
+        return say(knobs::describe(L::KNOBS));
     }
     let knobs = Knobs::from_settings(L::KNOBS, &args.settings)?;
     if args.check {
@@ -71,6 +69,18 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         return crate::app::window::run::<L>(&args, knobs, camera);
     }
     crate::app::headless::run::<L>(&args, knobs, camera)
+}
+
+/// Prints `text` on standard output. A reader that stops reading (`--help | head`) ends the output,
+/// not the program: Rust's `print!` panics on the closed pipe.
+pub fn say(text: impl std::fmt::Display) -> Result<()> {
+    use std::io::Write;
+    match write!(std::io::stdout().lock(), "{text}") {
+        Err(error) if error.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(error).context("cannot write to standard output")
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Mesa's drivers print "error: XDG_RUNTIME_DIR is invalid or not set" to stderr when that variable is

@@ -530,11 +530,8 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
     if args.list_steps {
         // The steps depend on the knobs, not on the size: list them from a small frame.
         (request.width, request.height) = (16, 16);
-        print!(
-            "{}",
-            steps::describe(&Headless::<L>::new(&request)?.steps())
-        );
-        return Ok(());
+        let steps = Headless::<L>::new(&request)?.steps();
+        return crate::app::cli::say(steps::describe(&steps));
     }
     let headless = Headless::<L>::new(&request)?;
     if args.verbose {
@@ -557,7 +554,7 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
     if let Some(pixel) = args.pixel {
         let settings = Story::settings(&request.knobs, request.camera, L::CAMERA);
         let story = headless.story(pixel, settings)?;
-        print!("{}", story.text());
+        crate::app::cli::say(story.text())?;
         if args.verbose {
             eprintln!("told the pixel's story in {:.0?}", start.elapsed());
         }

@@ -7,6 +7,7 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
+use crate::app::cli::say;
 use crate::app::headless::{Headless, Request};
 use crate::book::flip::{self, Comparison, STRICT};
 use crate::book::shots::{self, BookShot, Setting};
@@ -89,14 +90,14 @@ pub fn check<L: Lesson>(
     let mut differ = Vec::new();
     for shot in &shots {
         if let Some(reason) = &shot.driver_dependent {
-            println!("{}: {}", shot.name, not_compared(reason));
+            say(format!("{}: {}\n", shot.name, not_compared(reason)))?;
             continue;
         }
         let setting = shot.setting::<L>(overrides)?;
         let verdict = compare::<L>(shot, &setting, scene, backend)?;
         let summary = verdict.comparison.summary();
         if verdict.matches() {
-            println!("{}: matches the book ({summary})", shot.name);
+            say(format!("{}: matches the book ({summary})\n", shot.name))?;
             continue;
         }
         std::fs::create_dir_all(out)
@@ -106,13 +107,13 @@ pub fn check<L: Lesson>(
         crate::app::headless::save_png(&verdict.actual, &actual)?;
         let difference_image = image::DynamicImage::ImageRgb8(verdict.comparison.difference);
         crate::app::headless::save_png(&difference_image.to_rgba8(), &difference)?;
-        println!(
-            "{}: DIFFERS from the book ({summary}); yours is {}, where it differs {}; the book's: {}",
+        say(format!(
+            "{}: DIFFERS from the book ({summary}); yours is {}, where it differs {}; the book's: {}\n",
             shot.name,
             actual.display(),
             difference.display(),
             shot.path().display()
-        );
+        ))?;
         differ.push(shot.name.as_str());
     }
     if !differ.is_empty() {
