@@ -512,11 +512,11 @@ impl<L: Lesson> Workbench<L> {
         });
         let copy_dst = target.usage().contains(wgpu::TextureUsages::COPY_DST);
         let panel_copied = idle || (fits && inside && copy_dst);
-        // The view, pixel for pixel. Where the view and the panel's picture tile the target, by two
-        // copies: a render pass (with its bind group) more cost a fast GPU a tenth of a millisecond
-        // a frame, the panel's whole added cost. Otherwise (half resolution, a view that does not
-        // fit) drawn, the rest cleared. (Through egui's shader the view cost a software GPU 29 ms
-        // a frame at 1280x720.)
+        // The view, pixel for pixel. Where the view and the panel's picture tile the target, it is
+        // copied, as the picture is: drawn by a render pass (with a bind group made each frame) it
+        // cost an H100 most of the tenth of a millisecond the panel added to its frame. Otherwise
+        // (half resolution, a view that does not fit) it is drawn, and the rest cleared. (Through
+        // egui's shader the view cost a software GPU 29 ms a frame at 1280x720.)
         let shown = match viewing.show {
             Show::Color => 0,
             Show::Depth | Show::RawDepth => 1,
@@ -880,7 +880,6 @@ pub fn set_knobs<L: Lesson>(
     Ok(())
 }
 
-/// `rect` with its corners moved to whole pixels.
 /// A view of the workbench's target, for the passes that draw into it.
 fn target_view(target: &wgpu::Texture) -> wgpu::TextureView {
     target.create_view(&wgpu::TextureViewDescriptor {
@@ -889,6 +888,7 @@ fn target_view(target: &wgpu::Texture) -> wgpu::TextureView {
     })
 }
 
+/// `rect` with its corners moved to whole pixels.
 fn pixel_rect(rect: egui::Rect, pixels_per_point: f32) -> egui::Rect {
     let round =
         |p: egui::Pos2| (p.to_vec2() * pixels_per_point).round().to_pos2() / pixels_per_point;
