@@ -31,8 +31,25 @@ fn grew(bytes: isize) {
     PEAK_BYTES.fetch_max(now, Ordering::Relaxed);
 }
 
-// The only unsafe code of the suite: a global allocator must implement an unsafe trait. Each method
-// passes its arguments on to the system allocator unchanged, and counts.
+/// A mutant for the soak test: keeps `bytes` that the count above does not see, written so that
+/// their pages are resident — as a driver's C allocation would be. Never freed.
+pub fn leak_unseen(bytes: usize) {
+    if bytes == 0 {
+        return;
+    }
+    let layout = Layout::from_size_align(bytes, 16).expect("a small layout");
+    // SAFETY: `layout` has a non-zero size; the block is written within its `bytes` before it is
+    // dropped on the floor, and never read or freed.
+    #[allow(unsafe_code)]
+    unsafe {
+        let block = System.alloc(layout);
+        assert!(!block.is_null(), "the system allocator is out of memory");
+        std::ptr::write_bytes(block, 1, bytes);
+    }
+}
+
+// The only unsafe code of the suite (with `leak_unseen`): a global allocator must implement an
+// unsafe trait. Each method passes its arguments on to the system allocator unchanged, and counts.
 #[allow(unsafe_code)]
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
