@@ -233,7 +233,10 @@ pub fn measure_panel(lesson: &'static str, size: (u32, u32), plan: &Plan) -> Res
             use workbook::app::workbench::headless::HeadlessWorkbench;
             let Run(lesson, size, plan) = self;
             let size_arg = format!("{}x{}", size.0, size.1);
-            let args = Args::parse_for::<L>([L::NAME, "--size", &size_arg])?;
+            // At full resolution on every adapter: the panel's cost is measured on the frame the
+            // lesson draws in a screenshot, not on a software GPU's quarter of it.
+            let arguments = [L::NAME, "--size", &size_arg, "--resolution", "full"];
+            let args = Args::parse_for::<L>(arguments)?;
             let mut bench = HeadlessWorkbench::<L>::new(&args)?;
             // The panel compares the view with the book's picture when they match: a thread of
             // its own, once. Warm up until it is done, and both ways.

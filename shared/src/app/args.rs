@@ -103,10 +103,10 @@ pub enum Resolution {
 }
 
 impl Resolution {
-    /// Whether to draw at half resolution on an adapter of this type.
-    pub fn half(self, device_type: wgpu::DeviceType) -> bool {
+    /// Whether to draw at half resolution on this adapter.
+    pub fn half(self, adapter: &wgpu::AdapterInfo) -> bool {
         match self {
-            Self::Auto => device_type == wgpu::DeviceType::Cpu,
+            Self::Auto => adapter.device_type == wgpu::DeviceType::Cpu,
             Self::Full => false,
             Self::Half => true,
         }
@@ -194,5 +194,32 @@ impl Args {
             .as_deref()
             .map(Camera::parse)
             .unwrap_or(Ok(L::CAMERA))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Resolution;
+
+    /// Adapter information as two real adapters report it: lavapipe and an NVIDIA H100.
+    fn adapter(name: &str, device_type: wgpu::DeviceType) -> wgpu::AdapterInfo {
+        wgpu::AdapterInfo {
+            name: name.into(),
+            ..wgpu::AdapterInfo::new(device_type, wgpu::Backend::Vulkan)
+        }
+    }
+
+    #[test]
+    fn auto_draws_at_half_resolution_on_a_software_gpu_only() {
+        let software = adapter("llvmpipe (LLVM 15.0.6, 256 bits)", wgpu::DeviceType::Cpu);
+        let discrete = adapter("NVIDIA H100 80GB HBM3", wgpu::DeviceType::DiscreteGpu);
+        let integrated = adapter("Intel(R) UHD Graphics 620", wgpu::DeviceType::IntegratedGpu);
+        assert!(Resolution::Auto.half(&software));
+        assert!(!Resolution::Auto.half(&discrete));
+        assert!(!Resolution::Auto.half(&integrated));
+        for adapter in [&software, &discrete] {
+            assert!(Resolution::Half.half(adapter));
+            assert!(!Resolution::Full.half(adapter));
+        }
     }
 }

@@ -145,8 +145,8 @@ impl<L: Lesson> Runner<L> {
     }
 
     /// Draws the frame into `picture` (of the size the lesson draws at) and shows it over the whole
-    /// of `target`, scaled: a window drawing at half resolution, a WebGL2 canvas (see
-    /// [`crate::app::web`]).
+    /// of `target`, each of its pixels made a block of the target's: a window drawing at half
+    /// resolution, a WebGL2 canvas (see [`crate::app::web`]).
     pub fn draw_through(
         &mut self,
         (picture, size): (&wgpu::TextureView, (u32, u32)),
@@ -156,9 +156,9 @@ impl<L: Lesson> Runner<L> {
     ) -> Result<()> {
         self.resize(size.0, size.1);
         let (mut encoder, _) = self.record(picture, stop, show, picture)?;
-        self.scene
-            .blit
-            .draw(&self.gpu.device, &mut encoder, picture, target);
+        let (device, pixelated) = (&self.gpu.device, wgpu::FilterMode::Nearest);
+        let blit = &self.scene.blit;
+        blit.draw_in(device, &mut encoder, picture, target, None, pixelated);
         self.gpu.queue.submit([encoder.finish()]);
         Ok(())
     }

@@ -135,10 +135,7 @@ impl<L: Lesson> App<'_, L> {
         if !runner.can_show(show) {
             anyhow::bail!(crate::gpu::views::DepthViewPipelines::UNSUPPORTED);
         }
-        let mut workbench = Workbench::new(&runner, self.args)?;
-        // A software GPU's window draws at half resolution unless told otherwise.
-        let device_type = runner.gpu.adapter.get_info().device_type;
-        workbench.half_resolution = self.args.resolution.half(device_type);
+        let workbench = Workbench::new(&runner, self.args)?;
         let panel_input = egui_winit::State::new(
             workbench.context().clone(),
             egui::ViewportId::ROOT,

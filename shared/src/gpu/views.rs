@@ -493,11 +493,14 @@ impl StencilViewPipeline {
     }
 }
 
-/// SHOW_TEXTURE: draws a texture over a whole target of another size, filtered.
+/// SHOW_TEXTURE: draws a texture over a whole target of another size, filtered (a lesson's own
+/// target in the film) or each texel made a block of pixels (the window at half resolution, whose
+/// every pixel is then one of the lesson's, as a picked pixel is).
 pub struct Blit {
     pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
-    sampler: wgpu::Sampler,
+    linear: wgpu::Sampler,
+    nearest: wgpu::Sampler,
 }
 
 impl Blit {
@@ -522,20 +525,23 @@ impl Blit {
             (&shader, "fs_texture"),
             color_format,
         );
-        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
-            label: Some("blit sampler"),
-            mag_filter: wgpu::FilterMode::Linear,
-            min_filter: wgpu::FilterMode::Linear,
-            ..Default::default()
-        });
+        let sampler = |label, filter| {
+            device.create_sampler(&wgpu::SamplerDescriptor {
+                label: Some(label),
+                mag_filter: filter,
+                min_filter: filter,
+                ..Default::default()
+            })
+        };
         Self {
             pipeline,
             layout,
-            sampler,
+            linear: sampler("blit sampler, filtered", wgpu::FilterMode::Linear),
+            nearest: sampler("blit sampler, pixelated", wgpu::FilterMode::Nearest),
         }
     }
 
-    /// Draws `source` over all of `target`.
+    /// Draws `source` over all of `target`, filtered.
     pub fn draw(
         &self,
         device: &wgpu::Device,
@@ -543,12 +549,14 @@ impl Blit {
         source: &wgpu::TextureView,
         target: &wgpu::TextureView,
     ) {
-        self.draw_in(device, encoder, source, target, None);
+        let filter = wgpu::FilterMode::Linear;
+        self.draw_in(device, encoder, source, target, None, filter);
     }
 
     /// Draws `source` into the `viewport` (x, y, width, height in pixels) of `target`, or all of
-    /// it, clearing the rest to black. A source of the viewport's size is copied pixel for pixel
-    /// (the window's view beside its panel).
+    /// it, clearing the rest to black, sampled with `filter`. A source of the viewport's size is
+    /// copied pixel for pixel (the window's view beside its panel); one of half its size, with
+    /// `Nearest`, each of its pixels made four.
     pub fn draw_in(
         &self,
         device: &wgpu::Device,
@@ -556,7 +564,12 @@ impl Blit {
         source: &wgpu::TextureView,
         target: &wgpu::TextureView,
         viewport: Option<[f32; 4]>,
+        filter: wgpu::FilterMode,
     ) {
+        let sampler = match filter {
+            wgpu::FilterMode::Nearest => &self.nearest,
+            wgpu::FilterMode::Linear => &self.linear,
+        };
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("blit bind group"),
             layout: &self.layout,
@@ -567,7 +580,7 @@ impl Blit {
                 },
                 wgpu::BindGroupEntry {
                     binding: 1,
-                    resource: wgpu::BindingResource::Sampler(&self.sampler),
+                    resource: wgpu::BindingResource::Sampler(sampler),
                 },
             ],
         });

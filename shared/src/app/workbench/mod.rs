@@ -15,7 +15,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 
-use crate::app::args::{Args, Resolution};
+use crate::app::args::Args;
 use crate::app::runner::Runner;
 use crate::book::check::{self, Verdict};
 use crate::book::shots::{self, BookShot, Setting};
@@ -184,7 +184,8 @@ impl<L: Lesson> Workbench<L> {
             picked: None,
             story: None,
             story_at: Instant::now(),
-            half_resolution: args.resolution == Resolution::Half,
+            // A software GPU's window draws at half resolution unless told otherwise.
+            half_resolution: args.resolution.half(&info),
             software_gpu: info.device_type == wgpu::DeviceType::Cpu,
             half_picture: Picture::new("half-resolution frame", runner.scene.color_format),
             _lesson: std::marker::PhantomData,
@@ -541,6 +542,7 @@ impl<L: Lesson> Workbench<L> {
                 &self.buffers.views[shown],
                 &target_view(target),
                 fits.then_some(viewport),
+                wgpu::FilterMode::Nearest,
             );
         }
         let mut textures = output.textures_delta;
