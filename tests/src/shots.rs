@@ -656,6 +656,18 @@ impl Shot {
     }
 }
 
+/// The driver that drew the book's pictures: Mesa 22.3's lavapipe (Debian 12's), on Vulkan.
+/// `cargo screenshots` on it remakes them bit for bit, so where a picture is the driver's own
+/// choice (z-fighting) the tests compare it only on this driver.
+pub const BOOK_DRIVER: &str = "Mesa 22.3.6";
+
+/// Whether `adapter` is the driver that drew the book ([`BOOK_DRIVER`]).
+pub fn drew_the_book(adapter: &workbook::wgpu::AdapterInfo) -> bool {
+    adapter.backend == workbook::wgpu::Backend::Vulkan
+        && adapter.device_type == workbook::wgpu::DeviceType::Cpu
+        && adapter.driver_info.starts_with(BOOK_DRIVER)
+}
+
 /// The book's list of screenshots (`book/src/images/shots.txt`) as the catalogue makes it.
 pub fn list_text() -> Result<String> {
     let shots = SHOTS
