@@ -268,6 +268,11 @@ impl<L: Lesson> Headless<L> {
         crate::app::pixel::story(&self.runner, &self.color, pixel, settings)
     }
 
+    /// Every draw of the frame, as a pixel's story meets them: step, recipe and object.
+    pub fn draws(&self) -> Vec<crate::gpu::pass::Draw> {
+        crate::app::pixel::draws(&self.runner, &self.color)
+    }
+
     /// Renders the frame once, reading back the colour, depth and stencil buffers after every step.
     pub fn film(&self) -> Result<Vec<Still>> {
         self.runner.gpu.scoped(|| self.film_unscoped())

@@ -14,7 +14,7 @@
 use anyhow::{Result, bail};
 
 use crate::app::runner::Runner;
-use crate::gpu::pass::{Probe, Probing};
+use crate::gpu::pass::{Draw, Probe, Probing};
 use crate::gpu::readback::read_buffer;
 use crate::gpu::views::{DEPTH_COPY_FORMAT, STENCIL_VALUES_FORMAT};
 use crate::lesson::Lesson;
@@ -36,6 +36,16 @@ pub fn story<L: Lesson>(
     runner
         .gpu
         .scoped(|| pollster::block_on(tell(runner, color, pixel, settings)))
+}
+
+/// Every draw of the frame `runner` draws into `color`, as a pixel's story meets them (recorded,
+/// not submitted): its step, its recipe (where the workbook baked its pipeline) and its object.
+pub fn draws<L: Lesson>(runner: &Runner<L>, color: &wgpu::Texture) -> Vec<Draw> {
+    let mut probe = Probe::new(&runner.gpu.device, (0, 0), 0);
+    probe.start(Probing::Until(0));
+    let color_view = color.create_view(&Default::default());
+    drop(runner.record_probed(&color_view, &mut probe, &mut |_, _, _| {}));
+    probe.draws
 }
 
 /// The story of `pixel` in the frame `runner` draws into `color` (a texture of the frame's size),

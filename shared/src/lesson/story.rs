@@ -191,10 +191,11 @@ impl DrawStory {
 
     /// Whether the GPU stored what the model predicts (colours within 3 of 255: the GPU blends the
     /// fragment's colour before it is rounded to the 8 bits the twin stored), and counted a passing
-    /// fragment where the model has one.
+    /// fragment where the model has one. A draw of a pipeline the workbook did not bake has no
+    /// recipe to predict from: it does not agree (its story says it cannot be checked).
     pub fn agrees(&self) -> bool {
         let Some(predicted) = self.predicted() else {
-            return true;
+            return false;
         };
         let colours = predicted
             .color
@@ -221,7 +222,10 @@ impl DrawStory {
             return vec![format!("{name}: does not reach this pixel")];
         }
         let (Some(recipe), Some(outcomes)) = (&self.recipe, self.outcomes()) else {
-            return vec![format!("{name}: {count} fragment(s) reach this pixel")];
+            return vec![format!(
+                "{name}: {count} fragment(s) reach this pixel; with no recipe to read, its tests \
+                 cannot be written out or checked"
+            )];
         };
         let mut lines = vec![name];
         for (index, (fragment, outcome)) in self.fragments.iter().zip(&outcomes).enumerate() {
