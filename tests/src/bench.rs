@@ -5,7 +5,7 @@
 
 use std::fmt::Write as _;
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
 use workbook::Lesson;
 use workbook::app::headless::{FrameTiming, Headless, Request};
 use workbook::gpu::timing::StepTimer;
@@ -513,4 +513,61 @@ pub fn plot(results: &[Measured], size: (u32, u32), title: &str) -> String {
         }
     }
     svg + "</svg>\n"
+}
+
+/// Checks a CSV the benchmark wrote, as read back from its file: the `header` the book's cost page
+/// reads, a row for each of `lessons`, and every figure a number that can be one: finite, and
+/// greater than zero but for `added` (the panel's share, which noise can make negative). The GPU's
+/// figures may be `NaN`, which the benchmark writes where the adapter cannot measure them (no
+/// timestamp queries, no memory report). Returns the number of rows.
+pub fn check_csv(text: &str, header: &str, lessons: &[&str]) -> Result<usize> {
+    const TEXT: [&str; 5] = ["adapter", "lesson", "settings", "step", "profile"];
+    let mut lines = text.lines();
+    if lines.next() != Some(header) {
+        bail!("the header is not `{header}`");
+    }
+    let names: Vec<&str> = header.split(',').collect();
+    let mut seen = Vec::new();
+    let mut rows = 0;
+    for (number, line) in lines.enumerate() {
+        let row = number + 1;
+        let fields = csv_fields(line);
+        if fields.len() != names.len() {
+            bail!("row {row}: {} fields, not {}", fields.len(), names.len());
+        }
+        for (name, field) in names.iter().zip(&fields) {
+            if *name == "lesson" {
+                seen.push(field.clone());
+            }
+            let unmeasured = name.starts_with("gpu_") && field == "NaN";
+            if TEXT.contains(name) || unmeasured {
+                continue;
+            }
+            let value: f64 = field
+                .parse()
+                .map_err(|_| anyhow::anyhow!("row {row}: {name} is `{field}`"))?;
+            if !value.is_finite() || (*name != "added" && value <= 0.0) {
+                bail!("row {row}: {name} is {field}");
+            }
+        }
+        rows += 1;
+    }
+    if let Some(missing) = lessons.iter().find(|l| !seen.iter().any(|s| s == *l)) {
+        bail!("no row for {missing}");
+    }
+    Ok(rows)
+}
+
+/// A CSV line's fields, a quoted field (which may hold commas) without its quotes.
+fn csv_fields(line: &str) -> Vec<String> {
+    let (mut fields, mut field, mut quoted) = (Vec::new(), String::new(), false);
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => fields.push(std::mem::take(&mut field)),
+            _ => field.push(c),
+        }
+    }
+    fields.push(field);
+    fields
 }

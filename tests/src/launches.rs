@@ -199,13 +199,32 @@ pub fn measure_window(lesson: &'static str, profile: &str, runs: usize) -> Resul
                 )
             };
             let (short, long) = (run(SHORT)?, run(LONG)?);
-            rates.push((LONG - SHORT) as f64 / (long - short).max(1e-3));
+            match frame_rate(short, long) {
+                Some(rate) => rates.push(rate),
+                None => eprintln!(
+                    "bench-lessons: {lesson} at {resolution} resolution: {LONG} frames took \
+                     {long:.3} s, {SHORT} took {short:.3} s: noise, not a rate; run left out"
+                ),
+            }
         }
+    }
+    if rates.iter().any(Vec::is_empty) {
+        bail!("{lesson}'s window: every run was noise (the longer run no slower than the shorter)");
     }
     Ok(WindowRate {
         lesson,
         fps: [spread(&rates[0])[0], spread(&rates[1])[0]],
     })
+}
+
+/// Frames per second from a run of [`SHORT`] frames that took `short` seconds and one of [`LONG`]
+/// that took `long`: the frames between them over the time between them. `None` where the longer
+/// run took no longer by at least a millisecond a frame drawn — a difference that small is the
+/// start-up's noise, not frames (with no floor, 60 frames over 1 µs read as 60 million a second).
+pub fn frame_rate(short: f64, long: f64) -> Option<f64> {
+    let frames = (LONG - SHORT) as f64;
+    let time = long - short;
+    (time >= frames * 1e-3).then(|| frames / time)
 }
 
 pub fn window_table(results: &[WindowRate]) -> String {

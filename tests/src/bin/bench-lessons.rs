@@ -202,40 +202,108 @@ fn main() -> ExitCode {
     }
     println!("measured in {:.0?}", started.elapsed());
     if let Some(prefix) = args.out {
-        let csv = prefix.with_extension("csv");
-        let panel_csv = PathBuf::from(format!("{}-panel.csv", prefix.display()));
-        let written = (|| {
-            if wanted(Part::Frames) {
-                std::fs::write(&csv, bench::csv(&results))?;
-            }
-            if wanted(Part::Panel) {
-                std::fs::write(&panel_csv, bench::panel_csv(&panel))?;
-            }
-            if !start_up.is_empty() {
-                let name = format!("{}-start-up.csv", prefix.display());
-                std::fs::write(name, launches::start_up_csv(&start_up))?;
-            }
-            if !window.is_empty() {
-                let name = format!("{}-window.csv", prefix.display());
-                std::fs::write(name, launches::window_csv(&window))?;
-            }
-            for size in plan.sizes.iter().filter(|_| wanted(Part::Frames)) {
-                let name = format!("{}-{}x{}.svg", prefix.display(), size.0, size.1);
-                let title = format!("GPU time per frame, {}x{}, {adapter}", size.0, size.1);
-                std::fs::write(name, bench::plot(&results, *size, &title))?;
-            }
-            Ok::<_, std::io::Error>(())
-        })();
-        if let Err(error) = written {
-            eprintln!(
-                "bench-lessons: error: cannot write {}: {error}",
-                csv.display()
-            );
+        let report = Report {
+            frames: wanted(Part::Frames).then_some(&results[..]),
+            panel: wanted(Part::Panel).then_some(&panel[..]),
+            start_up: &start_up,
+            window: &window,
+            launch_lessons: &launch_lessons,
+            sizes: &plan.sizes,
+            adapter: &adapter,
+        };
+        if !write(&prefix, &report) {
             return ExitCode::FAILURE;
         }
-        println!("wrote {}-*", prefix.display());
     }
     ExitCode::SUCCESS
+}
+
+/// What a run measured, for [`write`]: each part measured (`None`, or empty, where it was not).
+struct Report<'a> {
+    frames: Option<&'a [bench::Measured]>,
+    panel: Option<&'a [bench::PanelCost]>,
+    start_up: &'a [launches::StartUp],
+    window: &'a [launches::WindowRate],
+    launch_lessons: &'a [&'static str],
+    sizes: &'a [(u32, u32)],
+    adapter: &'a str,
+}
+
+/// Writes PREFIX.csv, PREFIX-panel.csv, PREFIX-start-up.csv, PREFIX-window.csv (each part
+/// measured) and the frames' plots, then reads each CSV back: it must hold what the cost page
+/// reads, a row for every lesson measured and figures that are figures (a rate out of noise, a
+/// zero, a NaN where a measure was due, is not). Says what failed and returns false if anything did.
+fn write(prefix: &std::path::Path, report: &Report) -> bool {
+    let named = |suffix: &str| PathBuf::from(format!("{}{suffix}", prefix.display()));
+    let of = |lessons: &mut dyn Iterator<Item = &'static str>| lessons.collect::<Vec<_>>();
+    let mut csvs: Vec<(PathBuf, String, &str, Vec<&str>)> = Vec::new();
+    if let Some(frames) = report.frames {
+        let lessons = of(&mut frames.iter().map(|m| m.lesson));
+        csvs.push((
+            named(".csv"),
+            bench::csv(frames),
+            bench::CSV_HEADER,
+            lessons,
+        ));
+    }
+    if let Some(panel) = report.panel {
+        let lessons = of(&mut panel.iter().map(|m| m.lesson));
+        let text = bench::panel_csv(panel);
+        csvs.push((named("-panel.csv"), text, bench::PANEL_CSV_HEADER, lessons));
+    }
+    let lessons = report.launch_lessons.to_vec();
+    if !report.start_up.is_empty() {
+        let text = launches::start_up_csv(report.start_up);
+        let header = launches::START_UP_CSV_HEADER;
+        csvs.push((named("-start-up.csv"), text, header, lessons.clone()));
+    }
+    if !report.window.is_empty() {
+        let text = launches::window_csv(report.window);
+        csvs.push((
+            named("-window.csv"),
+            text,
+            launches::WINDOW_CSV_HEADER,
+            lessons,
+        ));
+    }
+    let plots = report
+        .sizes
+        .iter()
+        .filter(|_| report.frames.is_some())
+        .map(|size| {
+            let title = format!(
+                "GPU time per frame, {}x{}, {}",
+                size.0, size.1, report.adapter
+            );
+            let plot = bench::plot(report.frames.unwrap_or_default(), *size, &title);
+            (named(&format!("-{}x{}.svg", size.0, size.1)), plot)
+        });
+    let files = csvs
+        .iter()
+        .map(|(path, text, ..)| (path.clone(), text.clone()));
+    for (path, text) in files.chain(plots) {
+        if let Err(error) = std::fs::write(&path, text) {
+            eprintln!(
+                "bench-lessons: error: cannot write {}: {error}",
+                path.display()
+            );
+            return false;
+        }
+    }
+    println!("wrote {}-*", prefix.display());
+    for (path, _, header, lessons) in &csvs {
+        let checked = std::fs::read_to_string(path)
+            .map_err(anyhow::Error::from)
+            .and_then(|text| bench::check_csv(&text, header, lessons));
+        match checked {
+            Ok(rows) => println!("checked {}: {rows} rows", path.display()),
+            Err(error) => {
+                eprintln!("bench-lessons: error: {}: {error:#}", path.display());
+                return false;
+            }
+        }
+    }
+    true
 }
 
 /// The window is measured as a learner runs it fast: release (the quick run: this program's own

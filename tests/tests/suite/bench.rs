@@ -147,3 +147,71 @@ fn the_panels_cost_is_measured() {
         "{row}"
     );
 }
+
+/// The window's frames/s is the 60 frames between a short and a long run over the time between
+/// them; where the long run took no longer (the start-up's noise is larger than the frames) there
+/// is no rate, rather than a huge one.
+#[test]
+fn a_window_rate_needs_the_longer_run_to_take_longer() {
+    use workbook_tests::launches::frame_rate;
+    let rate = frame_rate(1.0, 2.2).expect("60 frames in 1.2 s");
+    assert!((rate - 50.0).abs() < 1e-9, "{rate}");
+    assert_eq!(frame_rate(1.0, 1.0), None);
+    assert_eq!(frame_rate(1.0, 0.9), None, "the long run was the faster");
+    assert_eq!(
+        frame_rate(1.0, 1.000_001),
+        None,
+        "60 frames in a microsecond"
+    );
+    assert!(
+        frame_rate(1.0, 1.07).is_some(),
+        "60 frames in 70 ms: 857 a second"
+    );
+}
+
+/// What the benchmark's CSVs are checked for when it writes them (CI's quick run): a rate out of
+/// noise, a zero, a NaN where a measure was due, a lesson missing, a column lost — each refused.
+#[test]
+fn the_benchmark_s_csvs_are_checked_for_figures() {
+    use workbook_tests::bench::check_csv;
+    use workbook_tests::launches::WINDOW_CSV_HEADER;
+    let window = |rows: &str| format!("{WINDOW_CSV_HEADER}\n{rows}");
+    let good = window("depth-test,1280,720,26.3,50.5\nstencil-basics,1280,720,25.2,46.4\n");
+    assert_eq!(
+        check_csv(&good, WINDOW_CSV_HEADER, &["depth-test"]).unwrap(),
+        2
+    );
+    for (bad, why) in [
+        (window("depth-test,1280,720,0.0,50.5\n"), "a zero rate"),
+        (window("depth-test,1280,720,NaN,50.5\n"), "a NaN rate"),
+        (window("depth-test,1280,720,inf,50.5\n"), "an infinite rate"),
+        (window("depth-test,1280,720,26.3\n"), "a column lost"),
+        (
+            window("stencil-basics,1280,720,25.2,46.4\n"),
+            "depth-test missing",
+        ),
+        ("lesson,full_fps\n".to_string(), "another header"),
+    ] {
+        assert!(
+            check_csv(&bad, WINDOW_CSV_HEADER, &["depth-test"]).is_err(),
+            "{why} passed"
+        );
+    }
+    // The adapter's name holds commas inside its quotes; GPU figures may be NaN (not measured),
+    // the panel's share may be negative.
+    let panel = format!(
+        "{PANEL_CSV_HEADER}\n\"llvmpipe (LLVM 15.0.6, 256 bits) (Vulkan)\",depth-test,1280,720,\
+         29.3,27.6,33.7,27.0,25.9,30.7,-0.080,54.96,50.13,0.1849,0.2176\n"
+    );
+    assert_eq!(
+        check_csv(&panel, PANEL_CSV_HEADER, &["depth-test"]).unwrap(),
+        1
+    );
+    let frames = format!(
+        "{CSV_HEADER}\n\"an adapter\",depth-test,\"\",160,90,\"frame\",NaN,NaN,NaN,250.4,65.4,\
+         63.561,15.7,NaN,205.7,66.574\n"
+    );
+    assert_eq!(check_csv(&frames, CSV_HEADER, &["depth-test"]).unwrap(), 1);
+    let no_rate = frames.replace(",15.7,", ",NaN,");
+    assert!(check_csv(&no_rate, CSV_HEADER, &["depth-test"]).is_err());
+}

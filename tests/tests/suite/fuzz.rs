@@ -673,6 +673,13 @@ fn fuzz_corpus_replays() {
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
 
+/// The most the loader may hold, as a multiple of the file's size: the test's own figure, not the
+/// loader's constant (a loader that held more and raised its constant would pass a test that read
+/// it). Measured: 4.15 for the skull, 6.46 for the grid (`MAX_MEMORY_MULTIPLE`'s comment in
+/// `room/mesh.rs` accounts for every part of it); a loader that keeps one more copy of the text
+/// holds 7.5 for the grid, and fails.
+const MEMORY_MULTIPLE: f64 = 7.0;
+
 /// The loader holds a bounded multiple of the file's size: measured by the suite's counting
 /// allocator in a child process of its own (other tests' allocations would blur the peak), on the
 /// repository's skull (1.7 MB) and on a generated 1,000×1,000-vertex grid (a 71 MB OBJ, as dense as
@@ -704,7 +711,7 @@ fn loading_a_model_holds_a_bounded_multiple_of_its_size() {
         };
         let multiple = number("peak_bytes=") / number("file_bytes=");
         assert!(
-            multiple <= workbook::room::mesh::MAX_MEMORY_MULTIPLE,
+            multiple <= MEMORY_MULTIPLE,
             "loading held {multiple:.2} times the file's size: {line}"
         );
     }
