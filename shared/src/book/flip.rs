@@ -16,6 +16,7 @@ use image::{RgbImage, RgbaImage};
 pub const VISIBLE: f32 = 0.25;
 
 /// What a comparison found.
+#[derive(Clone)]
 pub struct Comparison {
     pub mean: f32,
     /// Share of pixels (0..1) with an error above [`VISIBLE`].
@@ -162,6 +163,98 @@ mod tests {
                 (x0..x0 + w).contains(&x) && (y0..y0 + h).contains(&y)
             })
             .collect()
+    }
+
+    /// A `width`×`height` black picture with the rectangle (x, y, w, h) white.
+    fn picture(width: u32, height: u32, rect: (u32, u32, u32, u32)) -> RgbaImage {
+        let mask = mask_with(width, height, rect);
+        RgbaImage::from_fn(width, height, |x, y| {
+            let v = if mask[(y * width + x) as usize] {
+                255
+            } else {
+                0
+            };
+            image::Rgba([v, v, v, 255])
+        })
+    }
+
+    #[test]
+    fn the_same_picture_differs_nowhere() {
+        let a = picture(64, 48, (10, 10, 8, 8));
+        let same = compare(&a, &a).unwrap();
+        assert_eq!(same.mean, 0.0);
+        assert_eq!((same.visible_share, same.largest_patch), (0.0, 0));
+        assert_eq!(same.errors.len(), 64 * 48);
+        assert_eq!(same.difference.dimensions(), (64, 48));
+        assert!(same.passes(STRICT));
+    }
+
+    #[test]
+    fn a_square_that_changed_is_one_visible_patch_of_about_its_size() {
+        let (a, b) = (
+            picture(64, 48, (0, 0, 0, 0)),
+            picture(64, 48, (20, 10, 10, 10)),
+        );
+        let changed = compare(&a, &b).unwrap();
+        // FLIP filters spatially: the patch is the square's 100 pixels and a rim (measured: 244).
+        assert!(
+            (100..=300).contains(&changed.largest_patch),
+            "{}",
+            changed.largest_patch
+        );
+        let visible = changed.errors.iter().filter(|&&e| e > VISIBLE).count() as f32;
+        assert_eq!(changed.visible_share, visible / (64.0 * 48.0));
+        assert!(changed.visible_share > 0.02 && changed.mean > 0.0);
+        assert!(!changed.passes(STRICT));
+        // Black where nothing changed, bright inside the square (the magma map).
+        assert_eq!(changed.difference.get_pixel(60, 44).0, [0, 0, 4]);
+        assert!(changed.difference.get_pixel(25, 15).0[0] > 200);
+        let summary = changed.summary();
+        assert!(
+            summary.contains(&format!("{} px", changed.largest_patch)),
+            "{summary}"
+        );
+        assert!(
+            summary.contains(&format!("{:.5}", changed.mean)),
+            "{summary}"
+        );
+        assert!(
+            summary.contains(&format!("{:.3}%", changed.visible_share * 100.0)),
+            "{summary}"
+        );
+    }
+
+    #[test]
+    fn pictures_of_other_sizes_are_not_compared() {
+        let error = compare(&picture(4, 4, (0, 0, 1, 1)), &picture(4, 5, (0, 0, 1, 1)));
+        assert!(error.is_err());
+        assert!(compare(&picture(4, 4, (0, 0, 1, 1)), &picture(5, 4, (0, 0, 1, 1))).is_err());
+    }
+
+    /// Each of the three figures alone decides, and a figure at its limit passes.
+    #[test]
+    fn each_figure_fails_alone_and_the_limit_itself_passes() {
+        let at = Comparison {
+            mean: STRICT.mean,
+            visible_share: STRICT.visible_share,
+            largest_patch: STRICT.largest_patch,
+            difference: RgbImage::new(1, 1),
+            errors: Vec::new(),
+        };
+        assert!(at.passes(STRICT));
+        let over = |c: Comparison| !c.passes(STRICT);
+        assert!(over(Comparison {
+            mean: 0.031,
+            ..at.clone()
+        }));
+        assert!(over(Comparison {
+            visible_share: 0.0016,
+            ..at.clone()
+        }));
+        assert!(over(Comparison {
+            largest_patch: 161,
+            ..at.clone()
+        }));
     }
 
     #[test]

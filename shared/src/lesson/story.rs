@@ -625,4 +625,399 @@ mod tests {
         // A quarter of white over black, in linear light, is sRGB 137.
         assert_eq!(glass.predicted().unwrap().color[0], 137);
     }
+
+    // Each rule on its own, against numbers worked by hand (the suite checks the same model
+    // against the GPU, in tests/suite/pixel.rs).
+
+    const FAR: Texel = Texel {
+        color: [10, 20, 30, 255],
+        depth: 1.0,
+        stencil: 0,
+    };
+
+    fn fragment(depth: f32) -> Fragment {
+        Fragment {
+            color: [200, 100, 50, 255],
+            depth,
+        }
+    }
+
+    /// A draw of `recipe` at reference `reference` over `before`, with these fragments; what the
+    /// GPU stored is set to the model's prediction (or to `after`, if given).
+    fn story_of(
+        recipe: Recipe,
+        reference: u32,
+        before: Texel,
+        fragments: &[Fragment],
+    ) -> DrawStory {
+        let mut story = DrawStory {
+            recipe: Some(recipe),
+            object: Some("a box"),
+            reference,
+            blend_constant: wgpu::Color::BLACK,
+            before,
+            after: before,
+            fragments: fragments.to_vec(),
+            passed: false,
+        };
+        story.after = story.predicted().unwrap();
+        story.passed = story.any_passes();
+        story
+    }
+
+    #[test]
+    fn an_opaque_fragment_in_front_writes_its_colour_and_depth() {
+        let story = story_of(states::OPAQUE, 0, FAR, &[fragment(0.5)]);
+        let outcome = story.outcomes().unwrap()[0];
+        assert_eq!(outcome.verdict, Verdict::Passes);
+        assert_eq!(outcome.operation, None);
+        assert_eq!(story.after.color, [200, 100, 50, 255]);
+        assert_eq!((story.after.depth, story.after.stencil), (0.5, 0));
+        assert!(story.agrees() && story.any_passes());
+        assert!(!story.any(Verdict::DepthFails) && !story.any(Verdict::StencilFails));
+        let lines = story.describe();
+        assert_eq!(lines[0], "OPAQUE · a box");
+        assert_eq!(lines[1], "a fragment: #c86432 at depth 0.50000");
+        assert_eq!(lines[2], "  stencil test: none (Always)");
+        assert_eq!(lines[3], "  depth test 0.50000 Less 1.00000 → pass");
+        assert_eq!(lines[4], "  colour written #c86432");
+        assert_eq!(lines.len(), 5);
+    }
+
+    #[test]
+    fn a_fragment_behind_fails_the_depth_test_and_writes_nothing() {
+        let near = Texel { depth: 0.25, ..FAR };
+        let story = story_of(states::OPAQUE, 0, near, &[fragment(0.5)]);
+        assert_eq!(story.outcomes().unwrap()[0].verdict, Verdict::DepthFails);
+        assert_eq!(story.after, near);
+        assert!(!story.any_passes() && story.any(Verdict::DepthFails));
+        let lines = story.describe();
+        assert_eq!(lines[3], "  depth test 0.50000 Less 0.25000 → fail");
+        assert_eq!(
+            lines[4],
+            "  colour: not written (the fragment was rejected)"
+        );
+        // An equal depth fails Less too.
+        let equal = story_of(states::OPAQUE, 0, near, &[fragment(0.25)]);
+        assert_eq!(equal.outcomes().unwrap()[0].verdict, Verdict::DepthFails);
+    }
+
+    #[test]
+    fn the_mark_replaces_the_stencil_and_writes_no_colour_or_depth() {
+        let story = story_of(states::MARK_MIRROR, 1, FAR, &[fragment(0.5)]);
+        let outcome = story.outcomes().unwrap()[0];
+        assert_eq!(outcome.operation, Some((StencilOperation::Replace, 1)));
+        assert_eq!(story.after, Texel { stencil: 1, ..FAR });
+        let lines = story.describe();
+        assert_eq!(lines[4], "  stencil Replace 0 → 1");
+        assert_eq!(lines[5], "  colour: none written (write mask empty)");
+    }
+
+    #[test]
+    fn the_reflection_passes_only_where_the_mark_is() {
+        let marked = Texel { stencil: 1, ..FAR };
+        let story = story_of(states::DRAW_REFLECTION, 1, marked, &[fragment(0.5)]);
+        assert_eq!(story.outcomes().unwrap()[0].verdict, Verdict::Passes);
+        assert_eq!(
+            story.describe()[2],
+            "  stencil test (1 & 0xFF) Equal (1 & 0xFF) → pass"
+        );
+        assert_eq!(story.describe()[4], "  stencil Keep");
+        let unmarked = story_of(states::DRAW_REFLECTION, 1, FAR, &[fragment(0.5)]);
+        let outcome = unmarked.outcomes().unwrap()[0];
+        assert_eq!(outcome.verdict, Verdict::StencilFails);
+        assert!(unmarked.any(Verdict::StencilFails));
+        assert_eq!(unmarked.after, FAR);
+        let lines = unmarked.describe();
+        assert_eq!(
+            lines[2],
+            "  stencil test (1 & 0xFF) Equal (0 & 0xFF) → fail"
+        );
+        assert_eq!(lines[3], "  depth test: not reached");
+    }
+
+    #[test]
+    fn no_double_blend_blends_the_first_of_two_fragments_only() {
+        let story = story_of(
+            states::NO_DOUBLE_BLEND,
+            0,
+            FAR,
+            &[fragment(0.5), fragment(0.5)],
+        );
+        let outcomes = story.outcomes().unwrap();
+        assert_eq!(outcomes[0].verdict, Verdict::Passes);
+        assert_eq!(
+            outcomes[0].operation,
+            Some((StencilOperation::IncrementClamp, 1))
+        );
+        assert_eq!(outcomes[1].verdict, Verdict::StencilFails);
+        assert_eq!(outcomes[1].before, outcomes[0].after);
+        assert_eq!(story.after.stencil, 1);
+        let lines = story.describe();
+        assert_eq!(lines[1], "fragment 1 of 2: #c86432 at depth 0.50000");
+        assert!(lines.iter().any(|l| l.starts_with("fragment 2 of 2")));
+        // No depth write: the shadow leaves the depth as it was.
+        assert_eq!(story.after.depth, 1.0);
+    }
+
+    #[test]
+    fn a_write_mask_keeps_the_bits_outside_it() {
+        let recipe = states::REFLECTED_NO_DOUBLE_BLEND;
+        let marked = Texel { stencil: 1, ..FAR };
+        let story = story_of(recipe, 1, marked, &[fragment(0.5)]);
+        let outcome = story.outcomes().unwrap()[0];
+        assert_eq!(outcome.verdict, Verdict::Passes);
+        assert_eq!(
+            story.after.stencil, 3,
+            "1 + 1 through mask 0b10, the mark kept"
+        );
+        let line = story
+            .describe()
+            .into_iter()
+            .find(|l| l.contains("write mask"));
+        assert_eq!(
+            line.unwrap(),
+            "  stencil IncrementClamp 1 → 3, write mask 0x02"
+        );
+    }
+
+    #[test]
+    fn alpha_blending_mixes_in_linear_light() {
+        let half = Fragment {
+            color: [255, 255, 255, 128],
+            depth: 0.5,
+        };
+        let black = Texel {
+            color: [0, 0, 0, 255],
+            ..FAR
+        };
+        let story = story_of(states::TRANSPARENT, 0, black, &[half]);
+        // 128/255 of white over black in linear light, then encoded: 188, not 128.
+        let expected = crate::gpu::linear_to_srgb(128.0 / 255.0);
+        assert_eq!(story.after.color[..3], [expected; 3]);
+        assert_eq!(
+            story.after.color[3],
+            128 + ((1.0 - 128.0 / 255.0) * 255.0f32).round() as u8
+        );
+        let line = &story.describe()[4];
+        assert!(
+            line.starts_with("  colour blended 0.502·src + 0.498·dst"),
+            "{line}"
+        );
+        assert!(line.ends_with(&hex(story.after.color)), "{line}");
+    }
+
+    #[test]
+    fn blend_operations_and_factors_as_the_gpu_defines_them() {
+        let (src, dst) = ([255, 0, 0, 255], [0, 255, 0, 0]);
+        let with = |color: wgpu::BlendComponent| Recipe {
+            blend: Some(wgpu::BlendState {
+                color,
+                alpha: wgpu::BlendComponent::REPLACE,
+            }),
+            ..states::OPAQUE
+        };
+        let component = |src_factor, dst_factor, operation| wgpu::BlendComponent {
+            src_factor,
+            dst_factor,
+            operation,
+        };
+        let k = wgpu::Color {
+            r: 0.5,
+            g: 0.5,
+            b: 0.5,
+            a: 1.0,
+        };
+        use BlendFactor as F;
+        use BlendOperation as O;
+        let cases = [
+            (component(F::One, F::One, O::Add), [255, 255, 0]),
+            (component(F::One, F::One, O::Subtract), [255, 0, 0]),
+            (component(F::One, F::One, O::ReverseSubtract), [0, 255, 0]),
+            (component(F::Zero, F::Zero, O::Min), [0, 0, 0]),
+            (component(F::Zero, F::Zero, O::Max), [255, 255, 0]),
+            (component(F::Dst, F::Src, O::Add), [0, 0, 0]),
+            (
+                component(F::OneMinusDst, F::OneMinusSrc, O::Add),
+                [255, 255, 0],
+            ),
+            (
+                component(F::DstAlpha, F::OneMinusDstAlpha, O::Add),
+                [0, 255, 0],
+            ),
+            (
+                component(F::SrcAlpha, F::OneMinusSrcAlpha, O::Add),
+                [255, 0, 0],
+            ),
+            (
+                component(F::SrcAlphaSaturated, F::Zero, O::Add),
+                [255, 0, 0],
+            ),
+            (
+                component(F::Constant, F::OneMinusConstant, O::Add),
+                [188, 188, 0],
+            ),
+        ];
+        for (blend, rgb) in cases {
+            let mixed = super::blend(&with(blend), src, dst, k);
+            assert_eq!(mixed[..3], rgb, "{blend:?}");
+            assert_eq!(mixed[3], 255, "alpha replaced: {blend:?}");
+        }
+        assert_eq!(
+            super::blend(&states::OPAQUE, src, dst, k),
+            src,
+            "no blend replaces"
+        );
+    }
+
+    #[test]
+    fn a_factor_is_written_as_a_number_where_the_channels_agree() {
+        let (src, dst, k) = ([255, 0, 0, 51], [0, 0, 0, 255], wgpu::Color::WHITE);
+        assert_eq!(factor_text(BlendFactor::SrcAlpha, src, dst, k), "0.2");
+        assert_eq!(
+            factor_text(BlendFactor::OneMinusSrcAlpha, src, dst, k),
+            "0.8"
+        );
+        assert_eq!(factor_text(BlendFactor::One, src, dst, k), "1");
+        assert_eq!(factor_text(BlendFactor::Zero, src, dst, k), "0");
+        assert_eq!(factor_text(BlendFactor::Src, src, dst, k), "Src");
+        assert_eq!(
+            factor_text(BlendFactor::OneMinusDst, src, dst, k),
+            "OneMinusDst"
+        );
+    }
+
+    #[test]
+    fn every_depth_compare_function() {
+        use CompareFunction as C;
+        let cases = [
+            (C::Never, [false, false, false]),
+            (C::Less, [true, false, false]),
+            (C::Equal, [false, true, false]),
+            (C::LessEqual, [true, true, false]),
+            (C::Greater, [false, false, true]),
+            (C::NotEqual, [true, false, true]),
+            (C::GreaterEqual, [false, true, true]),
+            (C::Always, [true, true, true]),
+        ];
+        for (compare, expected) in cases {
+            let got = [0.25, 0.5, 0.75].map(|fragment| compares(compare, fragment, 0.5));
+            assert_eq!(got, expected, "{compare:?}");
+        }
+    }
+
+    #[test]
+    fn a_story_that_disagrees_with_the_gpu_says_so() {
+        let mut story = story_of(states::OPAQUE, 0, FAR, &[fragment(0.5)]);
+        assert!(story.agrees());
+        let predicted = story.after;
+        for wrong in [
+            Texel {
+                color: [204, 100, 50, 255],
+                ..predicted
+            },
+            Texel {
+                depth: 0.5 + 2.0 * DEPTH_TOLERANCE,
+                ..predicted
+            },
+            Texel {
+                stencil: 1,
+                ..predicted
+            },
+        ] {
+            story.after = wrong;
+            assert!(!story.agrees(), "{wrong:?}");
+            let last = story.describe().pop().unwrap();
+            assert!(last.starts_with("the GPU stored"), "{last}");
+        }
+        story.after = Texel {
+            color: [203, 100, 50, 255],
+            depth: 0.5 + DEPTH_TOLERANCE,
+            ..predicted
+        };
+        assert!(story.agrees(), "within 3 of 255 and the depth tolerance");
+        story.after = predicted;
+        story.passed = false;
+        assert!(
+            !story.agrees(),
+            "the GPU counted no passing fragment where the model has one"
+        );
+    }
+
+    #[test]
+    fn a_draw_that_misses_the_pixel_or_has_no_recipe() {
+        let missed = story_of(states::OPAQUE, 0, FAR, &[]);
+        assert_eq!(
+            missed.describe(),
+            ["OPAQUE · a box: does not reach this pixel"]
+        );
+        assert!(missed.agrees() && !missed.any_passes());
+        let mut own = story_of(states::OPAQUE, 0, FAR, &[fragment(0.5)]);
+        own.recipe = None;
+        assert!(!own.agrees());
+        assert!(own.outcomes().is_none() && own.predicted().is_none());
+        let line = &own.describe()[0];
+        assert!(
+            line.starts_with("(a pipeline of its own) · a box: 1 fragment(s)"),
+            "{line}"
+        );
+        assert!(line.contains("cannot be written out or checked"), "{line}");
+        own.object = None;
+        assert!(own.describe()[0].starts_with("(a pipeline of its own): 1"));
+    }
+
+    #[test]
+    fn colours_are_written_as_hex_with_alpha_where_not_opaque() {
+        assert_eq!(hex([255, 0, 16, 255]), "#ff0010");
+        assert_eq!(hex([255, 0, 16, 128]), "#ff0010/80");
+    }
+
+    #[test]
+    fn the_story_s_text_heads_each_step_with_its_pixel() {
+        let story = Story {
+            lesson: "a-lesson",
+            pixel: (3, 4),
+            size: (32, 18),
+            settings: "stencil=off".into(),
+            steps: vec![
+                StepStory {
+                    name: "clear",
+                    after: FAR,
+                    into_own_target: false,
+                    draws: Vec::new(),
+                },
+                StepStory {
+                    name: "draw into a texture",
+                    after: FAR,
+                    into_own_target: true,
+                    draws: vec![story_of(states::OPAQUE, 0, FAR, &[fragment(0.5)])],
+                },
+            ],
+        };
+        let text = story.text();
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], "Pixel (3, 4) of a-lesson at 32×18, stencil=off");
+        assert!(lines[3].starts_with(" 1 clear "), "{}", lines[3]);
+        assert!(
+            lines[3].ends_with("#0a141e  depth 1.00000  stencil 0"),
+            "{}",
+            lines[3]
+        );
+        assert!(lines[4].starts_with(" 2 draw into a texture"));
+        assert_eq!(
+            lines[5],
+            "     drawn into the lesson's own target: this pixel is untouched"
+        );
+        assert_eq!(lines[6], "   · OPAQUE · a box");
+        assert_eq!(lines[7], "       a fragment: #c86432 at depth 0.50000");
+        let plain = Story {
+            settings: String::new(),
+            ..story
+        };
+        assert!(
+            plain
+                .text()
+                .starts_with("Pixel (3, 4) of a-lesson at 32×18\n")
+        );
+    }
 }
