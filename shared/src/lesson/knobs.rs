@@ -247,6 +247,46 @@ mod tests {
     }
 
     #[test]
+    fn a_knob_set_off_is_not_on() {
+        let knobs = Knobs::from_settings(KNOBS, &["write=off"]).unwrap();
+        assert!(!knobs.is_on("write"));
+    }
+
+    /// `--list-knobs`: each knob numbered by its key, its values listed, a long run of values
+    /// (lesson 9's texture sizes) shortened to its ends and count; twelve are still listed.
+    #[test]
+    fn the_knob_table_lists_each_knob_and_shortens_long_runs() {
+        let table = describe(KNOBS);
+        assert_eq!(
+            table.lines().collect::<Vec<_>>(),
+            [
+                "[1] depth: compare",
+                "    values: never, less, equal, less-equal, greater, not-equal, greater-equal, \
+                 always (default less)",
+                "[2] write: write",
+                "    values: on, off (default on)",
+            ]
+        );
+        const TWELVE: &[&str] = &[
+            "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12",
+        ];
+        const THIRTEEN: &[&str] = &[
+            "1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12", "13",
+        ];
+        let with = |values| {
+            describe(&[Knob {
+                name: "n",
+                values,
+                default: "1",
+                meaning: "a number",
+            }])
+        };
+        assert!(with(TWELVE).contains("values: 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12 (default 1)"));
+        assert!(with(THIRTEEN).contains("values: 1 to 13 (13 values) (default 1)"));
+        assert_eq!(describe(&[]), "This lesson has no knobs.\n");
+    }
+
+    #[test]
     fn bad_settings_say_what_is_allowed() {
         let err = Knobs::from_settings(KNOBS, &["colour=red"]).unwrap_err();
         assert!(err.to_string().contains("depth, write"), "{err}");

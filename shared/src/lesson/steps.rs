@@ -123,6 +123,8 @@ mod tests {
         assert_eq!(Stop::After(3).resolve(&steps).unwrap(), 3);
         let past = Stop::After(4).resolve(&steps).unwrap_err().to_string();
         assert!(past.contains("has 3 steps"), "{past}");
+        assert_eq!(Stop::After(2).count(), 2);
+        assert_eq!(Stop::Last.count(), usize::MAX, "every step, however many");
     }
 
     #[test]
