@@ -1,23 +1,37 @@
-//! `cargo web-test`: the web edition tested in a real browser, on both of its backends.
+//! `cargo web-test [LESSON...]`: the web edition tested in a real browser, on both of its backends.
 //!
 //! Serves the built book (`book/build.sh` first) on 127.0.0.1 and, in headless Chromium on WebGPU
-//! and then on WebGL2, opens every lesson page, clicks "Run", and for every picture of the book
-//! that lesson makes (the list `book/src/images/shots.txt`), sets the page's controls as a reader
-//! would — a knob's select for each `--set`, the step select for `--step`, the buffer select for
-//! `--show` — reads the canvas back and compares it with the book's picture by FLIP. Also:
+//! and then on WebGL2, opens every lesson page (or those named: a name that is no lesson is an
+//! error), clicks "Run", and for every picture of the book that lesson makes (the list
+//! `book/src/images/shots.txt`), sets the page's controls as a reader would — a knob's select for
+//! each `--set`, the step select for `--step`, the buffer select for `--show` — reads the canvas
+//! back and compares it with the book's picture by FLIP. Also:
 //!
 //! - the page's "same on your machine" line names those very settings, and (once per lesson) run
 //!   natively, draws the page's picture;
 //! - every wrong picture of the book, set up through the page, fails against its right one, so a
 //!   lesson broken that way in the browser would not pass;
-//! - a setting the backend cannot draw is offered disabled, with its reason (the depth buffer on
-//!   WebGL2), and is counted, not failed;
+//! - a setting the backend cannot draw is offered disabled, with its reason, and its picture is
+//!   skipped — but counted and named, and checked against the pictures the backend is known not to
+//!   draw, found from the book's list and not from the page: none on WebGPU; on WebGL2, which
+//!   cannot read the depth buffer in a shader, every view of the depth buffer (`--show depth`),
+//!   each refused for that reason. Any other picture skipped, one of those drawn after all, or a
+//!   backend with no picture compared fails the run;
 //! - a click on the canvas tells the pixel's story: for each of the book's stories, the pixel
 //!   clicked on WebGPU tells the story `--pixel` tells natively (the same steps, draws and test
 //!   outcomes; the measured colours and depths left out), and on WebGL2 the page says why not.
 //!
+//! Two kinds of the book's pictures are not tried on the page at all, on either backend; the run
+//! names them:
+//!
+//! - a driver-dependent picture (`planar-shadow-z-fighting`): which of two surfaces at one depth
+//!   wins a pixel is the rasteriser's own choice, and the page's rasteriser is not the book's;
+//! - the raw depth view (`depth-test-show-raw-depth`, `--show raw-depth`): the page's buffer select
+//!   offers colour, depth and stencil; the raw values are lesson 1's command line's alone.
+//!
 //! Failures write `-actual` and `-difference` PNGs into `target/web-test/`. The figures of every
-//! comparison go to `target/web-test/report.csv`.
+//! comparison, and how many pictures each backend compared and skipped, go to
+//! `target/web-test/report.csv`.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -54,9 +68,17 @@ fn main() -> ExitCode {
     }
 }
 
+/// What WebGL2's page gives as its reason for not showing the depth buffer (`cannot_show` in
+/// `shared/src/app/web.rs`): the one reason a picture may be skipped for.
+const WEBGL2_DEPTH: &str = "WebGL2 cannot read the depth buffer in a shader";
+
 struct Outcome {
     failures: Vec<String>,
     report: String,
+    /// The pictures compared with the book's, by name, on each backend.
+    compared: Vec<(WebBackend, String)>,
+    /// The pictures the page would not set up, by name, on each backend, with what it said.
+    skipped: Vec<(WebBackend, String, String)>,
 }
 
 impl Outcome {
@@ -72,7 +94,52 @@ impl Outcome {
     }
 }
 
+/// What the command line asks for.
+enum Request {
+    /// The pages of these lessons tested (every lesson's, when none is named).
+    Lessons(Vec<&'static str>),
+    PageScreenshot(PathBuf),
+    StoryScreenshot(PathBuf),
+}
+
+/// Reads the command line: lesson names, each one of [`LESSONS`], or `--page-screenshot FILE` or
+/// `--story-screenshot FILE`.
+fn request(arguments: &[String]) -> Result<Request> {
+    match arguments.first().map(String::as_str) {
+        Some("--page-screenshot") => {
+            let path = arguments.get(1).context("--page-screenshot FILE")?;
+            return Ok(Request::PageScreenshot(path.into()));
+        }
+        Some("--story-screenshot") => {
+            let path = arguments.get(1).context("--story-screenshot FILE")?;
+            return Ok(Request::StoryScreenshot(path.into()));
+        }
+        _ => {}
+    }
+    let mut named = Vec::new();
+    for name in arguments {
+        if name.starts_with('-') {
+            bail!(
+                "unknown option `{name}`: give lesson names, or --page-screenshot FILE, or --story-screenshot FILE"
+            );
+        }
+        let Some(lesson) = LESSONS.iter().find(|lesson| *lesson == name) else {
+            bail!("no lesson `{name}`: the lessons are {}", LESSONS.join(", "));
+        };
+        named.push(*lesson);
+    }
+    Ok(Request::Lessons(
+        LESSONS
+            .iter()
+            .copied()
+            .filter(|lesson| named.is_empty() || named.contains(lesson))
+            .collect(),
+    ))
+}
+
 fn run() -> Result<bool> {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let request = request(&arguments)?;
     let root = workspace();
     let site_root = root.join("book/build/html");
     if !site_root.join("live/workbook_web_bg.wasm").exists() {
@@ -87,26 +154,20 @@ fn run() -> Result<bool> {
     let shots = book_shots::read(&images)?;
     let site = browser::serve(&site_root)?;
     println!("web-test: serving {} at {site}", site_root.display());
+    let lessons = match request {
+        Request::PageScreenshot(path) => return page_screenshot(&site, &path).map(|()| true),
+        Request::StoryScreenshot(path) => return story_screenshot(&site, &path).map(|()| true),
+        Request::Lessons(lessons) => lessons,
+    };
     let mut outcome = Outcome {
         failures: Vec::new(),
         report: "backend,picture,against,mean,visible_percent,largest_patch\n".into(),
+        compared: Vec::new(),
+        skipped: Vec::new(),
     };
-    let mut only: Vec<String> = std::env::args().skip(1).collect();
-    if only.first().map(String::as_str) == Some("--page-screenshot") {
-        let path = only.get(1).context("--page-screenshot FILE")?;
-        return page_screenshot(&site, Path::new(path)).map(|()| true);
-    }
-    if only.first().map(String::as_str) == Some("--story-screenshot") {
-        let path = only.get(1).context("--story-screenshot FILE")?;
-        return story_screenshot(&site, Path::new(path)).map(|()| true);
-    }
-    only.retain(|name| !name.starts_with("--"));
     for backend in WebBackend::BOTH {
         let browser = WebBrowser::launch(backend)?;
-        for lesson in LESSONS
-            .iter()
-            .filter(|l| only.is_empty() || only.iter().any(|o| o == *l))
-        {
+        for lesson in &lessons {
             if let Err(error) = test_lesson(&browser, &site, lesson, &shots, &out, &mut outcome) {
                 outcome
                     .failures
@@ -114,6 +175,11 @@ fn run() -> Result<bool> {
             }
         }
     }
+    let selected: Vec<&BookShot> = shots
+        .iter()
+        .filter(|shot| lessons.contains(&shot.lesson.as_str()))
+        .collect();
+    tally(&selected, &mut outcome)?;
     std::fs::write(out.join("report.csv"), &outcome.report)?;
     if outcome.failures.is_empty() {
         println!("web-test: every lesson page matches the book on WebGPU and WebGL2");
@@ -125,6 +191,154 @@ fn run() -> Result<bool> {
         }
         Ok(false)
     }
+}
+
+/// Counts the pictures each backend compared and skipped among `selected` (the book's pictures of
+/// the lessons tested), prints and reports the counts, and fails the run where the skipped ones
+/// are not exactly those [`expected_skips`] names, each for WebGL2's reason, or where a picture
+/// was neither compared nor skipped, or a backend compared none.
+fn tally(selected: &[&BookShot], outcome: &mut Outcome) -> Result<()> {
+    let mut tried = Vec::new();
+    let mut untried = Vec::new();
+    for shot in selected {
+        match not_the_pages(shot)? {
+            Some(reason) => untried.push(format!("{} ({reason})", shot.name)),
+            None => tried.push(*shot),
+        }
+    }
+    for backend in WebBackend::BOTH {
+        let shown = backend.shown();
+        let expected = expected_skips(backend, &tried)?;
+        let compared: Vec<&str> = (outcome.compared.iter())
+            .filter(|(on, _)| *on == backend)
+            .map(|(_, name)| name.as_str())
+            .collect();
+        let skipped: Vec<(&str, &str)> = (outcome.skipped.iter())
+            .filter(|(on, _, _)| *on == backend)
+            .map(|(_, name, said)| (name.as_str(), said.as_str()))
+            .collect();
+        let tried_names: Vec<&str> = tried.iter().map(|shot| shot.name.as_str()).collect();
+        let failures = skip_faults(shown, &tried_names, &expected, &compared, &skipped);
+        println!("web-test: {}", counts(shown, &compared, &skipped));
+        let name = backend.name();
+        let _ = writeln!(
+            outcome.report,
+            "{name},all,pictures-compared,{},,",
+            compared.len()
+        );
+        let _ = writeln!(
+            outcome.report,
+            "{name},all,pictures-skipped,{},,",
+            skipped.len()
+        );
+        for (shot, _) in &skipped {
+            let _ = writeln!(outcome.report, "{name},{shot},skipped,,,");
+        }
+        outcome.failures.extend(failures);
+    }
+    if !untried.is_empty() {
+        println!(
+            "web-test: not tried on the page (see web-test.rs's header): {}",
+            untried.join(", ")
+        );
+    }
+    Ok(())
+}
+
+/// What is wrong with one backend's tally, if anything: a picture skipped that is not among the
+/// `expected` skips, or skipped for another reason than WebGL2's depth view; an expected skip that
+/// was compared; a picture of `tried` neither compared nor skipped; no picture compared at all.
+fn skip_faults(
+    shown: &str,
+    tried: &[&str],
+    expected: &[&str],
+    compared: &[&str],
+    skipped: &[(&str, &str)],
+) -> Vec<String> {
+    let mut failures = Vec::new();
+    for (name, said) in skipped {
+        if !expected.contains(name) {
+            failures.push(format!(
+                "{name} on {shown}: skipped, but the page should draw it: {said}"
+            ));
+        } else if !(said.contains("value depth is disabled") && said.contains(WEBGL2_DEPTH)) {
+            failures.push(format!(
+                "{name} on {shown}: skipped for another reason than WebGL2's depth view: {said}"
+            ));
+        }
+    }
+    for name in expected.iter().filter(|name| compared.contains(name)) {
+        failures.push(format!(
+            "{name} on {shown}: compared, but the page should refuse WebGL2 its depth view"
+        ));
+    }
+    let missing: Vec<&str> = (tried.iter().copied())
+        .filter(|name| !compared.contains(name) && !skipped.iter().any(|(s, _)| s == name))
+        .collect();
+    if !missing.is_empty() {
+        failures.push(format!(
+            "{shown}: {} pictures neither compared nor skipped (a failure above stopped their lesson): {}",
+            missing.len(),
+            missing.join(", ")
+        ));
+    }
+    if compared.is_empty() {
+        failures.push(format!("{shown}: no picture compared"));
+    }
+    failures
+}
+
+/// One backend's summary: `WebGL2: 61 pictures compared, 3 skipped (NAME, ...): REASON`.
+fn counts(shown: &str, compared: &[&str], skipped: &[(&str, &str)]) -> String {
+    let mut line = format!(
+        "{shown}: {} pictures compared, {} skipped",
+        compared.len(),
+        skipped.len()
+    );
+    if !skipped.is_empty() {
+        let names: Vec<&str> = skipped.iter().map(|(name, _)| *name).collect();
+        let mut reasons: Vec<&str> = (skipped.iter())
+            .map(|(_, said)| {
+                said.split_once("is disabled: ")
+                    .map_or(*said, |(_, why)| why)
+            })
+            .collect();
+        reasons.sort_unstable();
+        reasons.dedup();
+        let _ = write!(line, " ({}): {}", names.join(", "), reasons.join("; "));
+    }
+    line
+}
+
+/// The pictures among `tried` that `backend` is known not to draw, found from the book's list
+/// alone, not from the page: none on WebGPU; on WebGL2, which cannot read the depth buffer in a
+/// shader, those that show the depth buffer (`--show depth`, or a lesson's own buffer).
+fn expected_skips<'a>(backend: WebBackend, tried: &[&'a BookShot]) -> Result<Vec<&'a str>> {
+    let mut expected = Vec::new();
+    if backend == WebBackend::WebGl2 {
+        for shot in tried {
+            if setting_of(shot)?.show == workbook::Show::Depth {
+                expected.push(shot.name.as_str());
+            }
+        }
+    }
+    Ok(expected)
+}
+
+/// Why a picture of the book is not tried on the page at all, on either backend, if it is not (see
+/// the header): a driver-dependent picture, or the raw depth view, which the page does not offer.
+fn not_the_pages(shot: &BookShot) -> Result<Option<String>> {
+    if let Some(why) = &shot.driver_dependent {
+        return Ok(Some(format!(
+            "driver-dependent, {why}: the rasteriser's own choice"
+        )));
+    }
+    if shot.args()?.show == Some(workbook::Show::RawDepth) {
+        return Ok(Some(
+            "the raw depth view, which the page does not offer".into(),
+        ));
+    }
+    Ok(None)
 }
 
 /// The book's picture of the web edition (`cargo web-test --page-screenshot FILE`): lesson 4's page
@@ -172,82 +386,31 @@ fn test_lesson(
     }
     let mut natively_checked = false;
     for shot in shots.iter().filter(|shot| shot.lesson == lesson) {
-        let args = shot.args()?;
-        if shot.driver_dependent.is_some() || args.show == Some(workbook::Show::RawDepth) {
+        if let Some(reason) = not_the_pages(shot)? {
+            println!(
+                "  {:7} {:40} not tried on the page: {reason}",
+                backend.name(),
+                shot.name
+            );
             continue;
         }
-        // Every knob as the shot has it (the others at their defaults), then step, buffer, camera.
-        let wanted = setting_of(shot)?;
-        let setting = (|| -> Result<()> {
-            for (name, value) in wanted.knobs.pairs() {
-                page.set_knob(name, value)?;
-            }
-            page.set_step(match wanted.stop {
-                workbook::Stop::Last => 0,
-                workbook::Stop::After(number) => number,
-            })?;
-            page.set_show(wanted.show.name())?;
-            match &args.camera {
-                Some(pose) => page.set_camera(pose),
-                None => page.reset_camera(),
-            }
-        })();
-        if let Err(error) = setting {
+        if let Err(error) = set_up(&page, shot) {
             let text = format!("{error:#}");
-            if text.contains("is disabled") {
-                println!(
-                    "  {:7} {:40} not on this backend: {text}",
-                    backend.name(),
-                    shot.name
-                );
-                continue;
+            if !text.contains("is disabled") {
+                return Err(error.context(format!("setting up {}", shot.name)));
             }
-            return Err(error.context(format!("setting up {}", shot.name)));
+            println!(
+                "  {:7} {:40} not on this backend: {text}",
+                backend.name(),
+                shot.name
+            );
+            outcome.skipped.push((backend, shot.name.clone(), text));
+            continue;
         }
-        let picture = page.capture()?;
-        let reference = flip::load(&images().join(format!("{}.png", shot.name)))?;
-        let comparison = flip::compare(&reference, &picture)?;
-        outcome.record(backend, &shot.name, &shot.name, &comparison);
-        println!(
-            "  {:7} {:40} {}",
-            backend.name(),
-            shot.name,
-            comparison.summary()
-        );
-        if !comparison.passes(WEB) {
-            let stem = out.join(format!("{}-{}", shot.name, backend.name()));
-            std::fs::write(with_suffix(&stem, "-page.png"), page.screenshot(false)?)?;
-            picture.save(with_suffix(&stem, "-actual.png"))?;
-            comparison
-                .difference
-                .save(with_suffix(&stem, "-difference.png"))?;
-            outcome.failures.push(format!(
-                "{} on {}: {} (see {}-actual.png)",
-                shot.name,
-                backend.shown(),
-                comparison.summary(),
-                stem.display()
-            ));
-        }
-        check_command_line(&page, shot)?;
+        let picture = compare_shot(&page, shot, out, backend, outcome)?;
         if !natively_checked {
             natively_checked = true;
             check_natively(&page, lesson, &picture, out, backend, outcome)?;
-        }
-        // A wrong picture set up through the page must fail against its right one.
-        for pair in PAIRS.iter().filter(|pair| pair.wrong == shot.name) {
-            let right = flip::load(&images().join(format!("{}.png", pair.right)))?;
-            let comparison = flip::compare(&right, &picture)?;
-            outcome.record(backend, &shot.name, pair.right, &comparison);
-            if comparison.passes(WEB) {
-                outcome.failures.push(format!(
-                    "{} on {} passes as {}: {}",
-                    shot.name,
-                    backend.shown(),
-                    pair.right,
-                    comparison.summary()
-                ));
-            }
         }
     }
     for story in STORIES.iter().filter(|story| story.lesson == lesson) {
@@ -265,6 +428,80 @@ fn test_lesson(
         page.first_frame
     );
     Ok(())
+}
+
+/// Sets the page's controls to the shot's settings: every knob as the shot has it (the others at
+/// their defaults), then the step, the buffer and the camera. A value the page offers disabled
+/// fails with its reason (`value depth is disabled: ...`).
+fn set_up(page: &LivePage, shot: &BookShot) -> Result<()> {
+    let args = shot.args()?;
+    let wanted = setting_of(shot)?;
+    for (name, value) in wanted.knobs.pairs() {
+        page.set_knob(name, value)?;
+    }
+    page.set_step(match wanted.stop {
+        workbook::Stop::Last => 0,
+        workbook::Stop::After(number) => number,
+    })?;
+    page.set_show(wanted.show.name())?;
+    match &args.camera {
+        Some(pose) => page.set_camera(pose),
+        None => page.reset_camera(),
+    }
+}
+
+/// Reads the page's picture of a shot set up by [`set_up`] and compares it with the book's, and any
+/// right picture it is the wrong one of; checks the page's command line. Returns the picture.
+fn compare_shot(
+    page: &LivePage,
+    shot: &BookShot,
+    out: &Path,
+    backend: WebBackend,
+    outcome: &mut Outcome,
+) -> Result<image::RgbaImage> {
+    let picture = page.capture()?;
+    let reference = flip::load(&images().join(format!("{}.png", shot.name)))?;
+    let comparison = flip::compare(&reference, &picture)?;
+    outcome.record(backend, &shot.name, &shot.name, &comparison);
+    outcome.compared.push((backend, shot.name.clone()));
+    println!(
+        "  {:7} {:40} {}",
+        backend.name(),
+        shot.name,
+        comparison.summary()
+    );
+    if !comparison.passes(WEB) {
+        let stem = out.join(format!("{}-{}", shot.name, backend.name()));
+        std::fs::write(with_suffix(&stem, "-page.png"), page.screenshot(false)?)?;
+        picture.save(with_suffix(&stem, "-actual.png"))?;
+        comparison
+            .difference
+            .save(with_suffix(&stem, "-difference.png"))?;
+        outcome.failures.push(format!(
+            "{} on {}: {} (see {}-actual.png)",
+            shot.name,
+            backend.shown(),
+            comparison.summary(),
+            stem.display()
+        ));
+    }
+    check_command_line(page, shot)?;
+    // A wrong picture set up through the page must fail against its right one.
+    for pair in PAIRS.iter().filter(|pair| pair.wrong == shot.name) {
+        let right = flip::load(&images().join(format!("{}.png", pair.right)))?;
+        let comparison = flip::compare(&right, &picture)?;
+        outcome.record(backend, &shot.name, pair.right, &comparison);
+        if comparison.passes(WEB) {
+            outcome.failures.push(format!(
+                "{} on {} passes as {}: {}",
+                shot.name,
+                backend.shown(),
+                pair.right,
+                comparison.summary()
+            ));
+        }
+    }
+    Ok(picture)
 }
 
 /// A click on the canvas at the book's story pixel (scaled to the canvas) tells that pixel's story:
@@ -426,4 +663,79 @@ fn with_suffix(stem: &Path, suffix: &str) -> PathBuf {
     let mut path = stem.as_os_str().to_owned();
     path.push(suffix);
     PathBuf::from(path)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::skip_faults;
+
+    /// What the page says when WebGL2 refuses a depth view (through `LivePage::choose`).
+    const REFUSED: &str = "depth-test: value depth is disabled: WebGL2 cannot read the depth buffer in a shader: run on WebGPU";
+
+    #[test]
+    fn only_the_expected_pictures_may_be_skipped() {
+        let tried = ["colour", "depth", "stencil"];
+        let as_it_should = skip_faults(
+            "WebGL2",
+            &tried,
+            &["depth"],
+            &["colour", "stencil"],
+            &[("depth", REFUSED)],
+        );
+        assert!(as_it_should.is_empty(), "{as_it_should:?}");
+        let stencil_refused = skip_faults(
+            "WebGL2",
+            &tried,
+            &["depth"],
+            &["colour"],
+            &[("depth", REFUSED), ("stencil", REFUSED)],
+        );
+        assert_eq!(
+            stencil_refused,
+            [format!(
+                "stencil on WebGL2: skipped, but the page should draw it: {REFUSED}"
+            )]
+        );
+        let depth_refused_on_webgpu = skip_faults(
+            "WebGPU",
+            &tried,
+            &[],
+            &["colour", "stencil"],
+            &[("depth", REFUSED)],
+        );
+        assert_eq!(depth_refused_on_webgpu.len(), 1);
+        assert!(depth_refused_on_webgpu[0].starts_with("depth on WebGPU: skipped"));
+    }
+
+    #[test]
+    fn a_skip_must_be_for_webgl2s_reason_and_every_picture_accounted_for() {
+        let tried = ["colour", "depth"];
+        let knob = "depth-test: value always is disabled: no such GPU";
+        let faults = skip_faults(
+            "WebGL2",
+            &tried,
+            &["depth"],
+            &["colour"],
+            &[("depth", knob)],
+        );
+        assert_eq!(
+            faults,
+            [format!(
+                "depth on WebGL2: skipped for another reason than WebGL2's depth view: {knob}"
+            )]
+        );
+        let drawn = skip_faults("WebGL2", &tried, &["depth"], &["colour", "depth"], &[]);
+        assert_eq!(
+            drawn,
+            ["depth on WebGL2: compared, but the page should refuse WebGL2 its depth view"]
+        );
+        let nothing = skip_faults("WebGPU", &tried, &[], &[], &[]);
+        assert_eq!(
+            nothing,
+            [
+                "WebGPU: 2 pictures neither compared nor skipped (a failure above stopped their lesson): colour, depth",
+                "WebGPU: no picture compared",
+            ]
+        );
+    }
 }
