@@ -4,7 +4,9 @@
 //! in each translation (`book/build/html/<language>/`), as a reader's browser draws them. Each
 //! translated page must:
 //!
-//! - render its math: no KaTeX error, and as many formulas as the English page;
+//! - render its math: no KaTeX error, and the English page's formulas, paragraph by paragraph (a
+//!   translated sentence may put its formulas in another order), so that a formula changed in
+//!   translation is found (see [`Formula`]);
 //! - show its listings: the same code blocks as the English page, character for character but
 //!   for the comments of commands (`cargo run  # a window`), which are prose; the included listings
 //!   are included after translation: they are the real code in every language;
@@ -12,13 +14,17 @@
 //! - be in its language: `<html lang>` says so, and its text is (Chinese characters in the page);
 //! - link the glossary only to terms it has.
 //!
+//! The English pages are held to their Markdown: where a page's source in `book/src` has math (read
+//! there, not from what KaTeX made of it: `$$`, or a `$...$` outside code), the page must show
+//! formulas, so a book built without KaTeX fails rather than compare nothing with nothing.
+//!
 //! Then, on a lesson page, the language picker in the menu bar goes to the same page in the other
 //! language and back, and the search speaks the page's language: it finds an English word, and
 //! where mdBook's search cannot find a Chinese word (it splits the text at spaces) it says what to
 //! use instead. `--screenshots DIR` writes the picker open on both (default:
 //! `target/book-test/`).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::{Context, Result, bail};
@@ -46,13 +52,22 @@ const PICKER_PAGE: &str = "mark-mirror.html";
 
 /// What a page shows, as the browser drew it (one line of JSON from `INSPECT`).
 const INSPECT: &str = r#"new Promise((resolve) => {
+    const paragraphs = new Map();
     const images = [...document.querySelectorAll('main img')];
     Promise.all(images.map((i) => i.complete ? null :
         new Promise((r) => { i.addEventListener('load', r); i.addEventListener('error', r); })))
     .then(() => resolve(JSON.stringify({
         lang: document.documentElement.lang,
         katexErrors: document.querySelectorAll('.katex-error').length,
-        formulas: document.querySelectorAll('main .katex').length,
+        formulas: [...document.querySelectorAll('main .katex')].map((k) => {
+            const tex = k.querySelector('annotation[encoding="application/x-tex"]');
+            const source = k.closest('data.katex-src');
+            const html = k.querySelector('.katex-html') || k;
+            const paragraph = k.closest('p, li, td, th, h1, h2, h3, h4, h5, h6, dt, dd, figcaption, summary') || k;
+            if (!paragraphs.has(paragraph)) paragraphs.set(paragraph, paragraphs.size);
+            return [tex ? tex.textContent : source ? source.value : html.textContent, html.innerHTML,
+                    paragraphs.get(paragraph)];
+        }),
         listings: [...document.querySelectorAll('main pre code')].map((c) => c.textContent),
         images: images.map((i) => [i.getAttribute('src'), i.naturalWidth > 0]),
         text: document.querySelector('main').innerText,
@@ -65,7 +80,8 @@ const INSPECT: &str = r#"new Promise((resolve) => {
 struct Shown {
     lang: String,
     katex_errors: usize,
-    formulas: usize,
+    /// The page's formulas, in order.
+    formulas: Vec<Formula>,
     listings: Vec<String>,
     /// Each image's `src`, and whether it loaded.
     images: Vec<(String, bool)>,
@@ -74,45 +90,90 @@ struct Shown {
     ids: Vec<String>,
 }
 
+/// A formula as KaTeX drew it into a page. The book's KaTeX writes HTML alone (mdbook-katex's
+/// default output), which keeps no TeX: the formula is compared by its HTML, which the same TeX
+/// always makes alike, and named by its TeX where the page keeps it (KaTeX's MathML annotation, or
+/// mdbook-katex's `include-src`), else by its text as drawn (`d(z)`).
+#[derive(Debug, Clone)]
+struct Formula {
+    /// Its TeX, or its text as drawn.
+    name: String,
+    /// The HTML KaTeX made of it.
+    html: String,
+    /// Which of the page's paragraphs (or list items, table cells, headings) it is in, counted
+    /// from 0 in the page's order.
+    paragraph: u64,
+}
+
+impl Formula {
+    /// Whether `other` is this formula: the same name and the same HTML, wherever it stands.
+    fn same(&self, other: &Formula) -> bool {
+        self.name == other.name && self.html == other.html
+    }
+}
+
+/// What `page` shows (see [`INSPECT`]). A key missing from what the page said, or of another type,
+/// is an error, not an empty value: an empty value would pass for an empty page.
 fn inspect(page: &BookPage) -> Result<Shown> {
     use serde_json::Value;
     let json = page.evaluate(INSPECT)?;
     let value: Value =
         serde_json::from_str(&json).with_context(|| format!("the page said {json:.200}"))?;
-    let text = |key: &str| value[key].as_str().unwrap_or_default().to_string();
-    let count = |key: &str| value[key].as_u64().unwrap_or_default() as usize;
-    let texts = |key: &str| -> Vec<String> {
-        value[key]
-            .as_array()
-            .map(|items| {
-                items
-                    .iter()
-                    .map(|item| item.as_str().unwrap_or_default().to_string())
-                    .collect()
-            })
-            .unwrap_or_default()
+    let field = |key: &str| -> Result<&Value> {
+        value
+            .get(key)
+            .with_context(|| format!("the page's inspection has no `{key}`: {json:.200}"))
     };
-    let images = value["images"]
-        .as_array()
-        .map(|items| {
-            items
-                .iter()
-                .map(|pair| {
-                    let src = pair[0].as_str().unwrap_or_default().to_string();
-                    (src, pair[1].as_bool().unwrap_or(false))
-                })
-                .collect()
+    let text = |item: &Value, what: &str| -> Result<String> {
+        item.as_str()
+            .map(str::to_string)
+            .with_context(|| format!("{what} is {item}, not text"))
+    };
+    let list = |key: &str| -> Result<&Vec<Value>> {
+        field(key)?
+            .as_array()
+            .with_context(|| format!("`{key}` is not a list"))
+    };
+    let texts = |key: &str| -> Result<Vec<String>> {
+        list(key)?
+            .iter()
+            .enumerate()
+            .map(|(index, item)| text(item, &format!("`{key}` {}", index + 1)))
+            .collect()
+    };
+    let images = list("images")?
+        .iter()
+        .map(|pair| {
+            let loaded = pair[1]
+                .as_bool()
+                .context("an image's `loaded` is not true or false");
+            Ok((text(&pair[0], "an image's src")?, loaded?))
         })
-        .unwrap_or_default();
+        .collect::<Result<_>>()?;
+    let formulas = list("formulas")?
+        .iter()
+        .map(|pair| {
+            Ok(Formula {
+                name: text(&pair[0], "a formula's TeX")?,
+                html: text(&pair[1], "a formula's HTML")?,
+                paragraph: pair[2]
+                    .as_u64()
+                    .context("a formula's paragraph is not a number")?,
+            })
+        })
+        .collect::<Result<_>>()?;
+    let katex_errors = field("katexErrors")?
+        .as_u64()
+        .context("`katexErrors` is not a count")?;
     Ok(Shown {
-        lang: text("lang"),
-        katex_errors: count("katexErrors"),
-        formulas: count("formulas"),
-        listings: texts("listings"),
+        lang: text(field("lang")?, "`lang`")?,
+        katex_errors: katex_errors as usize,
+        formulas,
+        listings: texts("listings")?,
         images,
-        text: text("text"),
-        glossary: texts("glossary"),
-        ids: texts("ids"),
+        text: text(field("text")?, "`text`")?,
+        glossary: texts("glossary")?,
+        ids: texts("ids")?,
     })
 }
 
@@ -141,6 +202,18 @@ fn run() -> Result<bool> {
     let site = browser::serve(&site_root)?;
     let chrome = WebBrowser::launch(WebBackend::WebGl2)?;
     let mut failures = Vec::new();
+    let english = (pages.iter())
+        .map(|page| inspect(&chrome.page(&format!("{site}/{page}"))?))
+        .collect::<Result<Vec<_>>>()?;
+    let with_math = math_as_in_source(&root.join("book/src"), &pages, &english, &mut failures)?;
+    println!(
+        "English: {with_math} of {} pages have math in their source (book/src), {} formulas in all",
+        pages.len(),
+        english
+            .iter()
+            .map(|shown| shown.formulas.len())
+            .sum::<usize>()
+    );
     for (language, script) in &TRANSLATIONS {
         if !site_root.join(language).join("index.html").exists() {
             bail!(
@@ -150,8 +223,7 @@ fn run() -> Result<bool> {
         }
         let glossary = inspect(&chrome.page(&format!("{site}/{language}/glossary.html"))?)?.ids;
         let (mut formulas, mut listings, mut images) = (0, 0, 0);
-        for page in &pages {
-            let english = inspect(&chrome.page(&format!("{site}/{page}"))?)?;
+        for (page, english) in pages.iter().zip(&english) {
             let translated = inspect(&chrome.page(&format!("{site}/{language}/{page}"))?)?;
             let mut fail = |what: String| failures.push(format!("{language}/{page}: {what}"));
             if translated.lang != *language {
@@ -160,52 +232,13 @@ fn run() -> Result<bool> {
             if !translated.text.chars().any(|c| script.contains(&c)) {
                 fail(format!("no {language} text in the page"));
             }
-            if translated.katex_errors > 0 {
-                fail(format!("{} KaTeX errors", translated.katex_errors));
-            }
-            if translated.formulas != english.formulas {
-                fail(format!(
-                    "{} formulas, the English page {}",
-                    translated.formulas, english.formulas
-                ));
-            }
-            if comments_aside(&translated.listings) != comments_aside(&english.listings) {
-                let first = translated
-                    .listings
-                    .iter()
-                    .zip(&english.listings)
-                    .position(|(a, b)| a != b);
-                fail(format!(
-                    "its listings differ from the English page's ({} against {}; first different: {first:?})",
-                    translated.listings.len(),
-                    english.listings.len()
-                ));
-            }
-            if translated.images.len() != english.images.len() {
-                fail(format!(
-                    "{} images, the English page {}",
-                    translated.images.len(),
-                    english.images.len()
-                ));
-            }
-            for (src, loaded) in &translated.images {
-                if !loaded {
-                    fail(format!("the image {src} did not load"));
-                }
-            }
-            for id in &translated.glossary {
-                if !glossary.contains(id) {
-                    fail(format!(
-                        "a link to glossary.html#{id}, which has no such term"
-                    ));
-                }
-            }
-            formulas += translated.formulas;
+            compare_page(english, &translated, &glossary, &mut fail);
+            formulas += translated.formulas.len();
             listings += translated.listings.len();
             images += translated.images.len();
         }
         println!(
-            "{language}: {} pages, {formulas} formulas, {listings} listings and {images} images as in English",
+            "{language}: {} pages, {formulas} formulas (compared paragraph by paragraph), {listings} listings and {images} images as in English",
             pages.len()
         );
         picker(&chrome, &site, language, &args, &mut failures)?;
@@ -218,6 +251,200 @@ fn run() -> Result<bool> {
         println!("book-test: every translated page renders its math, listings and figures");
     }
     Ok(failures.is_empty())
+}
+
+/// A translated page against its English page: its math (no KaTeX error, the same formulas), its
+/// listings, its figures (as many, every one loaded) and its links into the glossary (whose terms
+/// are `glossary`). Each fault goes to `fail`.
+fn compare_page(
+    english: &Shown,
+    translated: &Shown,
+    glossary: &[String],
+    fail: &mut impl FnMut(String),
+) {
+    if translated.katex_errors > 0 {
+        fail(format!("{} KaTeX errors", translated.katex_errors));
+    }
+    if let Some(difference) = formulas_differ(&english.formulas, &translated.formulas) {
+        fail(difference);
+    }
+    if comments_aside(&translated.listings) != comments_aside(&english.listings) {
+        let first = translated
+            .listings
+            .iter()
+            .zip(&english.listings)
+            .position(|(a, b)| a != b);
+        fail(format!(
+            "its listings differ from the English page's ({} against {}; first different: {first:?})",
+            translated.listings.len(),
+            english.listings.len()
+        ));
+    }
+    if translated.images.len() != english.images.len() {
+        fail(format!(
+            "{} images, the English page {}",
+            translated.images.len(),
+            english.images.len()
+        ));
+    }
+    for (src, loaded) in &translated.images {
+        if !loaded {
+            fail(format!("the image {src} did not load"));
+        }
+    }
+    for id in &translated.glossary {
+        if !glossary.contains(id) {
+            fail(format!(
+                "a link to glossary.html#{id}, which has no such term"
+            ));
+        }
+    }
+}
+
+/// A page's formulas by paragraph: those of each paragraph that has any, in the page's order,
+/// each with its number in the page (from 0).
+fn by_paragraph(formulas: &[Formula]) -> Vec<Vec<(usize, &Formula)>> {
+    let mut paragraphs: Vec<Vec<(usize, &Formula)>> = Vec::new();
+    for (index, formula) in formulas.iter().enumerate() {
+        match paragraphs.last_mut() {
+            Some(last) if last[0].1.paragraph == formula.paragraph => last.push((index, formula)),
+            _ => paragraphs.push(vec![(index, formula)]),
+        }
+    }
+    paragraphs
+}
+
+/// Where a translated page's formulas part from the English page's, if they do. Compared paragraph
+/// by paragraph, each paragraph's formulas in any order (a translated sentence may put them in
+/// another): the first formula of the English page that its translated paragraph lacks, by its
+/// number, and what that paragraph has instead; else the counts.
+fn formulas_differ(english: &[Formula], translated: &[Formula]) -> Option<String> {
+    let (in_english, in_translation) = (by_paragraph(english), by_paragraph(translated));
+    let of = english.len();
+    for (mine, yours) in in_english.iter().zip(&in_translation) {
+        let count = |list: &[(usize, &Formula)], formula: &Formula| {
+            list.iter().filter(|(_, other)| other.same(formula)).count()
+        };
+        let differs =
+            |(_, formula): &&(usize, &Formula)| count(mine, formula) != count(yours, formula);
+        let lost = mine.iter().find(differs);
+        let found = yours.iter().find(differs);
+        let difference = match (lost, found) {
+            (None, None) => continue,
+            (Some((index, ours)), Some((_, theirs))) if ours.name == theirs.name => format!(
+                "formula {} of {of}, {:?}, is drawn otherwise than the English page's",
+                index + 1,
+                ours.name
+            ),
+            (Some((index, ours)), Some((_, theirs))) => format!(
+                "formula {} of {of} is {:?}, the English page's {:?}",
+                index + 1,
+                theirs.name,
+                ours.name
+            ),
+            (Some((index, ours)), None) => format!(
+                "formula {} of {of}, {:?}, is missing from its paragraph",
+                index + 1,
+                ours.name
+            ),
+            (None, Some((_, theirs))) => format!(
+                "the paragraph of formula {} of {of} has one more, {:?}",
+                mine[0].0 + 1,
+                theirs.name
+            ),
+        };
+        return Some(difference);
+    }
+    (in_english.len() != in_translation.len() || english.len() != translated.len()).then(|| {
+        format!(
+            "{} formulas in {} paragraphs, the English page {of} in {}",
+            translated.len(),
+            in_translation.len(),
+            in_english.len()
+        )
+    })
+}
+
+/// Holds the English pages to their Markdown in `src` (`book/src`): a page whose source has math
+/// must show formulas, or a book built without KaTeX would compare no formulas with none and pass.
+/// A page `NAME.html` is `NAME.md`, `index.html` the first chapter of `SUMMARY.md`, `print.html`
+/// every chapter; a page with no source is not held. Returns how many pages have math.
+fn math_as_in_source(
+    src: &Path,
+    pages: &[String],
+    english: &[Shown],
+    failures: &mut Vec<String>,
+) -> Result<usize> {
+    let read = |name: &str| {
+        let path = src.join(name);
+        std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))
+    };
+    let summary = read("SUMMARY.md")?;
+    let chapters: Vec<&str> = (summary.split("](").skip(1))
+        .filter_map(|rest| Some(rest.split_once(')')?.0))
+        .filter(|link| link.ends_with(".md"))
+        .collect();
+    let mut with_math = Vec::new();
+    for chapter in &chapters {
+        if has_math(&read(chapter)?) {
+            with_math.push(*chapter);
+        }
+    }
+    let mut count = 0;
+    for (page, shown) in pages.iter().zip(english) {
+        let stem = page.trim_end_matches(".html");
+        let source = with_math.iter().find(|chapter| match page.as_str() {
+            "print.html" => true,
+            "index.html" => chapters.first() == Some(*chapter),
+            _ => chapter.trim_end_matches(".md") == stem,
+        });
+        let Some(source) = source else { continue };
+        count += 1;
+        if shown.formulas.is_empty() {
+            failures.push(format!(
+                "{page}: book/src/{source} has math, but the English page shows no formula"
+            ));
+        }
+    }
+    Ok(count)
+}
+
+/// Whether Markdown has math as mdbook-katex reads it: `$$`, or a `$...$` span whose TeX neither
+/// begins nor ends with a space, outside fenced code blocks and inline code (a shell listing's `$`
+/// is no math); `\$` is a dollar sign.
+fn has_math(markdown: &str) -> bool {
+    let mut fence: Option<&str> = None;
+    for line in markdown.lines() {
+        let trimmed = line.trim_start();
+        if let Some(marker) = fence {
+            if trimmed.starts_with(marker) {
+                fence = None;
+            }
+            continue;
+        }
+        if let Some(marker) = ["```", "~~~"].into_iter().find(|m| trimmed.starts_with(m)) {
+            fence = Some(marker);
+            continue;
+        }
+        // Outside inline code: every other piece between backticks.
+        let line = line.replace("\\$", "");
+        let prose: Vec<&str> = line.split('`').step_by(2).collect();
+        let prose = prose.join(" ");
+        if prose.contains("$$") {
+            return true;
+        }
+        let pieces: Vec<&str> = prose.split('$').collect();
+        // A piece with a `$` on each side: pieces 1, 3, ... but the last.
+        let spans = pieces.iter().take(pieces.len().saturating_sub(1)).skip(1);
+        if spans.step_by(2).any(|tex| {
+            !tex.is_empty()
+                && !tex.starts_with(char::is_whitespace)
+                && !tex.ends_with(char::is_whitespace)
+        }) {
+            return true;
+        }
+    }
+    false
 }
 
 /// The search box of a translated lesson page, asked for an English word and for a Chinese one
@@ -323,4 +550,68 @@ fn picker(
     }
     println!("the picker: {PICKER_PAGE} → {language} → English, the same page each time");
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Formula, formulas_differ, has_math};
+
+    #[test]
+    fn math_is_found_outside_code_only() {
+        assert!(has_math("The depth $d(z)$ of a point."));
+        assert!(has_math("$$\nd = \\frac{f}{f - n}\n$$"));
+        assert!(has_math("| `Less` | $d < d_s$ | `GL_LESS` |"));
+        assert!(!has_math("Run `echo $HOME` and `$PATH`."));
+        assert!(!has_math("```sh\n$ cargo run\nprice: $5 and $6\n```"));
+        assert!(!has_math("It costs \\$5, or \\$6."));
+        assert!(!has_math("From $5 to $ 6: no span."));
+    }
+
+    #[test]
+    fn a_changed_formula_is_named_by_its_number() {
+        let formula = |name: &str, html: &str, paragraph: u64| Formula {
+            name: name.into(),
+            html: html.into(),
+            paragraph,
+        };
+        let english = [
+            formula("x2", "x<sup>2</sup>", 0),
+            formula("ds", "d<sub>s</sub>", 1),
+            formula("n", "n", 1),
+        ];
+        // A translated sentence with its formulas the other way round, in a paragraph of its own.
+        let reordered =
+            [english[0].clone(), english[2].clone(), english[1].clone()].map(|f| Formula {
+                paragraph: f.paragraph + 5,
+                ..f
+            });
+        assert_eq!(formulas_differ(&english, &reordered), None);
+        let changed = [
+            english[0].clone(),
+            formula("dt", "d<sub>t</sub>", 1),
+            english[2].clone(),
+        ];
+        assert_eq!(
+            formulas_differ(&english, &changed).as_deref(),
+            Some("formula 2 of 3 is \"dt\", the English page's \"ds\"")
+        );
+        let lowered = [
+            english[0].clone(),
+            formula("ds", "d<sup>s</sup>", 1),
+            english[2].clone(),
+        ];
+        assert_eq!(
+            formulas_differ(&english, &lowered).as_deref(),
+            Some("formula 2 of 3, \"ds\", is drawn otherwise than the English page's")
+        );
+        let moved = [english[0].clone(), english[1].clone(), formula("n", "n", 2)];
+        assert_eq!(
+            formulas_differ(&english, &moved).as_deref(),
+            Some("formula 3 of 3, \"n\", is missing from its paragraph")
+        );
+        assert_eq!(
+            formulas_differ(&english, &english[..1]).as_deref(),
+            Some("1 formulas in 1 paragraphs, the English page 3 in 2")
+        );
+    }
 }
