@@ -967,6 +967,85 @@ mod tests {
     }
 
     #[test]
+    fn a_stencil_that_could_write_says_it_kept_its_value() {
+        let near = Texel { depth: 0.25, ..FAR };
+        let behind = story_of(states::MARK_MIRROR, 1, near, &[fragment(0.5)]);
+        let lines = behind.describe();
+        assert_eq!(lines[2], "  stencil test: none (Always)");
+        assert_eq!(
+            lines[4], "  stencil Keep",
+            "the mark may write, and kept: {lines:?}"
+        );
+        assert_eq!(behind.after.stencil, 0);
+    }
+
+    #[test]
+    fn a_story_s_settings_are_the_changed_knobs_and_a_camera_of_its_own() {
+        use crate::lesson::knobs::{Knob, ON_OFF};
+        use crate::room::camera::BOOK_POSE;
+        const KNOBS: &[Knob] = &[Knob {
+            name: "stencil",
+            values: ON_OFF,
+            default: "on",
+            meaning: "the test",
+        }];
+        let defaults = Knobs::defaults(KNOBS);
+        let off = Knobs::from_settings(KNOBS, &["stencil=off"]).unwrap();
+        let other = Camera {
+            yaw: 140.0,
+            ..BOOK_POSE
+        };
+        assert_eq!(Story::settings(&defaults, BOOK_POSE, BOOK_POSE), "");
+        assert_eq!(Story::settings(&off, BOOK_POSE, BOOK_POSE), "stencil=off");
+        assert_eq!(
+            Story::settings(&defaults, other, BOOK_POSE),
+            "camera 140,14,11.0"
+        );
+        assert_eq!(
+            Story::settings(&off, other, BOOK_POSE),
+            "stencil=off, camera 140,14,11.0"
+        );
+    }
+
+    #[test]
+    fn a_factor_that_differs_by_channel_is_named() {
+        let (grey, k) = ([128, 128, 128, 255], wgpu::Color::WHITE);
+        // Src is per channel even where the channels happen to agree.
+        assert_eq!(factor_text(BlendFactor::Src, grey, grey, k), "Src");
+        let k = wgpu::Color {
+            r: 0.25,
+            g: 0.5,
+            b: 0.5,
+            a: 1.0,
+        };
+        assert_eq!(
+            factor_text(BlendFactor::Constant, grey, grey, k),
+            "Constant"
+        );
+        let k = wgpu::Color {
+            r: 0.25,
+            g: 0.25,
+            b: 0.25,
+            a: 1.0,
+        };
+        assert_eq!(factor_text(BlendFactor::Constant, grey, grey, k), "0.25");
+    }
+
+    #[test]
+    fn a_dark_colour_blends_through_the_linear_toe() {
+        // sRGB 1-3 lie on the encoding's linear part (below 0.0031308 in linear light).
+        let replace = Recipe {
+            blend: Some(wgpu::BlendState::REPLACE),
+            ..states::OPAQUE
+        };
+        let dark = [1, 2, 3, 255];
+        assert_eq!(
+            super::blend(&replace, dark, [200; 4], wgpu::Color::BLACK),
+            dark
+        );
+    }
+
+    #[test]
     fn colours_are_written_as_hex_with_alpha_where_not_opaque() {
         assert_eq!(hex([255, 0, 16, 255]), "#ff0010");
         assert_eq!(hex([255, 0, 16, 128]), "#ff0010/80");
