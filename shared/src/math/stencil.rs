@@ -146,6 +146,26 @@ mod tests {
         assert!(!passes(CompareFunction::Greater, 1, 0xff, 2));
     }
 
+    /// Each compare function with the reference below, equal to and above the stored value.
+    #[test]
+    fn every_compare_function() {
+        use CompareFunction as C;
+        let cases = [
+            (C::Never, [false, false, false]),
+            (C::Less, [true, false, false]),
+            (C::Equal, [false, true, false]),
+            (C::LessEqual, [true, true, false]),
+            (C::Greater, [false, false, true]),
+            (C::NotEqual, [true, false, true]),
+            (C::GreaterEqual, [false, true, true]),
+            (C::Always, [true, true, true]),
+        ];
+        for (compare, expected) in cases {
+            let got = [1, 2, 3].map(|reference| passes(compare, reference, 0xff, 2));
+            assert_eq!(got, expected, "{compare:?}");
+        }
+    }
+
     #[test]
     fn read_mask_cuts_both_sides() {
         // 0x12 & 0x0f = 0x02 and 0x32 & 0x0f = 0x02: equal once the high bits are masked off.
