@@ -257,6 +257,26 @@ mod tests {
         }));
     }
 
+    /// A patch in the first rows and columns, whose neighbours lie below and right of it only.
+    #[test]
+    fn a_patch_in_the_corner_is_one_patch() {
+        let mask = mask_with(8, 8, (0, 0, 2, 2));
+        assert_eq!(largest_patch(&mask, 8, 8), 4);
+        let mask = mask_with(8, 8, (6, 6, 2, 2));
+        assert_eq!(largest_patch(&mask, 8, 8), 4);
+    }
+
+    #[test]
+    fn a_png_is_read_for_comparison_and_a_missing_one_named() {
+        let path = std::env::temp_dir().join(format!("flip-load-{}.png", std::process::id()));
+        picture(6, 4, (1, 1, 2, 2)).save(&path).unwrap();
+        let loaded = load(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(loaded, picture(6, 4, (1, 1, 2, 2)));
+        let missing = load(&path).unwrap_err().to_string();
+        assert!(missing.contains("cannot read"), "{missing}");
+    }
+
     #[test]
     fn largest_patch_joins_neighbours_diagonals_included() {
         let mut mask = mask_with(20, 20, (2, 2, 3, 3)); // 9 pixels

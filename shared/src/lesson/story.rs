@@ -1045,6 +1045,73 @@ mod tests {
         );
     }
 
+    /// Each blend factor's value, per channel (0-2 colour, 3 alpha), as WebGPU defines it.
+    #[test]
+    fn every_blend_factor_s_value() {
+        let (s, d, k) = (
+            [0.1, 0.2, 0.3, 0.4],
+            [0.5, 0.6, 0.7, 0.8],
+            [0.25, 0.5, 0.75, 1.0],
+        );
+        use BlendFactor as F;
+        let cases: [(F, [f32; 4]); 14] = [
+            (F::Zero, [0.0; 4]),
+            (F::One, [1.0; 4]),
+            (F::Src, s),
+            (F::OneMinusSrc, [0.9, 0.8, 0.7, 0.6]),
+            (F::SrcAlpha, [0.4; 4]),
+            (F::OneMinusSrcAlpha, [0.6; 4]),
+            (F::Dst, d),
+            (F::OneMinusDst, [0.5, 0.4, 0.3, 0.2]),
+            (F::DstAlpha, [0.8; 4]),
+            (F::OneMinusDstAlpha, [0.2; 4]),
+            // min(source alpha, 1 - destination alpha) for colour, 1 for alpha.
+            (F::SrcAlphaSaturated, [0.2, 0.2, 0.2, 1.0]),
+            (F::Constant, k),
+            (F::OneMinusConstant, [0.75, 0.5, 0.25, 0.0]),
+            (F::Src1, [f32::NAN; 4]),
+        ];
+        for (factor, expected) in cases {
+            for (channel, want) in expected.into_iter().enumerate() {
+                let value = factor_value(factor, channel, &s, &d, &k);
+                let same = (value - want).abs() < 1e-6 || (value.is_nan() && want.is_nan());
+                assert!(same, "{factor:?}, channel {channel}: {value}, not {want}");
+            }
+        }
+    }
+
+    #[test]
+    fn subtracting_blends_take_one_side_from_the_other() {
+        let with = |operation| Recipe {
+            blend: Some(wgpu::BlendState {
+                color: wgpu::BlendComponent {
+                    src_factor: BlendFactor::One,
+                    dst_factor: BlendFactor::One,
+                    operation,
+                },
+                alpha: wgpu::BlendComponent::REPLACE,
+            }),
+            ..states::OPAQUE
+        };
+        // sRGB 225 and 137 are about 0.75 and 0.25 in linear light: 0.5 between them is sRGB 188.
+        let (light, dark, k) = ([225; 4], [137; 4], wgpu::Color::BLACK);
+        let subtract = super::blend(&with(BlendOperation::Subtract), light, dark, k);
+        let reverse = super::blend(&with(BlendOperation::ReverseSubtract), dark, light, k);
+        for mixed in [subtract, reverse] {
+            assert!(mixed[0].abs_diff(188) <= 1, "{mixed:?}");
+        }
+    }
+
+    #[test]
+    fn the_depth_tolerance_is_sixteen_steps_of_the_24_bit_buffer() {
+        let mut story = story_of(states::OPAQUE, 0, FAR, &[fragment(0.5)]);
+        story.after.depth = 0.5 + 5e-7; // about 8 steps
+        assert!(story.agrees());
+        story.after.depth = 0.5 + 2e-6; // about 34 steps
+        assert!(!story.agrees());
+        assert_eq!(DEPTH_TOLERANCE * (1 << 24) as f32, 16.0);
+    }
+
     #[test]
     fn colours_are_written_as_hex_with_alpha_where_not_opaque() {
         assert_eq!(hex([255, 0, 16, 255]), "#ff0010");
