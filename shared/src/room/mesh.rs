@@ -635,9 +635,30 @@ mod tests {
             refused > 100,
             "only {refused} cases refused: the test tests little"
         );
+        let at_the_limit = "f 1 2 3\n".repeat(MAX_TRIANGLES);
         assert_eq!(
-            check_faces(&"f 1 2 3\n".repeat(MAX_TRIANGLES + 1)),
+            check_faces(&at_the_limit),
+            Ok(()),
+            "the limit itself is allowed"
+        );
+        assert_eq!(
+            check_faces(&(at_the_limit + "f 1 2 3\n")),
             Err(FaceProblem::TooMany)
+        );
+    }
+
+    #[test]
+    fn indices_parse_as_i64_from_str_does() {
+        for text in ["12", "+12", "-12", "0", "+0", "-9223372036854775808"] {
+            assert_eq!(parse_i64(text.as_bytes()), text.parse().ok(), "{text}");
+        }
+        for text in ["", "+", "-", "1a", "9223372036854775808", "--1", "+-1"] {
+            assert_eq!(parse_i64(text.as_bytes()), None, "{text}");
+        }
+        // A sign does not hide an index past 2³² from the check.
+        assert_eq!(
+            check_faces("vt 0 0\nf 1/+99999999999 2/1 3/1\n"),
+            Err(FaceProblem::PastTheEnd(2))
         );
     }
 }
