@@ -273,17 +273,7 @@ pub struct StencilViewPipeline {
 
 impl StencilViewPipeline {
     pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let colours: Vec<[f32; 4]> = (0..=255u8)
-            .map(|v| {
-                let [r, g, b] = stencil_colour(v).map(crate::gpu::srgb_to_linear);
-                [r, g, b, 1.0]
-            })
-            .collect();
-        let palette = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("stencil palette"),
-            contents: bytemuck::cast_slice(&colours),
-            usage: wgpu::BufferUsages::UNIFORM,
-        });
+        let palette = stencil_palette(device);
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("stencil_view.wgsl"),
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/stencil_view.wgsl").into()),
@@ -293,77 +283,10 @@ impl StencilViewPipeline {
             bind_group_layouts: &[],
             immediate_size: 0,
         });
-        // Adds the fragment's value to what is there: the bits sum up to the stored value.
-        let add = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        };
         let bits = (0..8)
-            .map(|bit| {
-                let equal = wgpu::StencilFaceState {
-                    compare: wgpu::CompareFunction::Equal,
-                    fail_op: wgpu::StencilOperation::Keep,
-                    depth_fail_op: wgpu::StencilOperation::Keep,
-                    pass_op: wgpu::StencilOperation::Keep,
-                };
-                device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                    label: Some(&format!("STENCIL_BIT_{bit}")),
-                    layout: Some(&bits_layout),
-                    vertex: wgpu::VertexState {
-                        module: &shader,
-                        entry_point: Some("vs_bit"),
-                        compilation_options: Default::default(),
-                        buffers: &[],
-                    },
-                    fragment: Some(wgpu::FragmentState {
-                        module: &shader,
-                        entry_point: Some("fs_bit"),
-                        compilation_options: Default::default(),
-                        targets: &[Some(wgpu::ColorTargetState {
-                            format: STENCIL_VALUES_FORMAT,
-                            blend: Some(wgpu::BlendState {
-                                color: add,
-                                alpha: add,
-                            }),
-                            write_mask: wgpu::ColorWrites::RED,
-                        })],
-                    }),
-                    primitive: wgpu::PrimitiveState::default(),
-                    depth_stencil: Some(wgpu::DepthStencilState {
-                        format: crate::gpu::DEPTH_STENCIL_FORMAT,
-                        depth_write_enabled: Some(false),
-                        depth_compare: Some(wgpu::CompareFunction::Always),
-                        stencil: wgpu::StencilState {
-                            front: equal,
-                            back: equal,
-                            read_mask: 1 << bit,
-                            write_mask: 0,
-                        },
-                        bias: wgpu::DepthBiasState::default(),
-                    }),
-                    multisample: wgpu::MultisampleState::default(),
-                    multiview_mask: None,
-                    cache: None,
-                })
-            })
+            .map(|bit| stencil_bit_pipeline(device, &bits_layout, &shader, bit))
             .collect();
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("stencil palette bind group layout"),
-            entries: &[
-                wgpu::BindGroupLayoutEntry {
-                    binding: 0,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                crate::gpu::uniform_entry(1),
-            ],
-        });
+        let layout = stencil_palette_layout(device);
         let palette_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("stencil palette pipeline layout"),
             bind_group_layouts: &[Some(&layout)],
@@ -491,6 +414,102 @@ impl StencilViewPipeline {
             pass.draw(0..3, bit as u32..bit as u32 + 1);
         }
     }
+}
+
+/// The palette of `--show stencil` on the GPU: every stencil value's false colour, linear.
+fn stencil_palette(device: &wgpu::Device) -> wgpu::Buffer {
+    let colours: Vec<[f32; 4]> = (0..=255u8)
+        .map(|v| {
+            let [r, g, b] = stencil_colour(v).map(crate::gpu::srgb_to_linear);
+            [r, g, b, 1.0]
+        })
+        .collect();
+    device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("stencil palette"),
+        contents: bytemuck::cast_slice(&colours),
+        usage: wgpu::BufferUsages::UNIFORM,
+    })
+}
+
+/// STENCIL_BIT_i: adds 2^i / 255 to the red channel where bit i of the stored stencil value is set
+/// (read mask 1 << i; the reference, 1 << i too, is set when it draws).
+fn stencil_bit_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    shader: &wgpu::ShaderModule,
+    bit: u32,
+) -> wgpu::RenderPipeline {
+    // Adds the fragment's value to what is there: the bits sum up to the stored value.
+    let add = wgpu::BlendComponent {
+        src_factor: wgpu::BlendFactor::One,
+        dst_factor: wgpu::BlendFactor::One,
+        operation: wgpu::BlendOperation::Add,
+    };
+    let equal = wgpu::StencilFaceState {
+        compare: wgpu::CompareFunction::Equal,
+        fail_op: wgpu::StencilOperation::Keep,
+        depth_fail_op: wgpu::StencilOperation::Keep,
+        pass_op: wgpu::StencilOperation::Keep,
+    };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(&format!("STENCIL_BIT_{bit}")),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: shader,
+            entry_point: Some("vs_bit"),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        fragment: Some(wgpu::FragmentState {
+            module: shader,
+            entry_point: Some("fs_bit"),
+            compilation_options: Default::default(),
+            targets: &[Some(wgpu::ColorTargetState {
+                format: STENCIL_VALUES_FORMAT,
+                blend: Some(wgpu::BlendState {
+                    color: add,
+                    alpha: add,
+                }),
+                write_mask: wgpu::ColorWrites::RED,
+            })],
+        }),
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: crate::gpu::DEPTH_STENCIL_FORMAT,
+            depth_write_enabled: Some(false),
+            depth_compare: Some(wgpu::CompareFunction::Always),
+            stencil: wgpu::StencilState {
+                front: equal,
+                back: equal,
+                read_mask: 1 << bit,
+                write_mask: 0,
+            },
+            bias: wgpu::DepthBiasState::default(),
+        }),
+        multisample: wgpu::MultisampleState::default(),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// The layout of the palette look-up: the rebuilt stencil values and the palette.
+fn stencil_palette_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("stencil palette bind group layout"),
+        entries: &[
+            wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            },
+            crate::gpu::uniform_entry(1),
+        ],
+    })
 }
 
 /// SHOW_TEXTURE: draws a texture over a whole target of another size, filtered (a lesson's own
