@@ -4,11 +4,15 @@
 use std::ffi::OsString;
 use std::process::ExitCode;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 
 use crate::app::args::Args;
 use crate::lesson::Lesson;
 use crate::lesson::knobs::{self, Knobs};
+
+// Printing lives in a leaf module of its own, so that the headless runner and the book's check
+// print without reaching back up into the command line.
+use crate::app::output::say;
 
 /// Where `--check` writes the renders that differ from the book, and their difference images.
 pub const CHECK_OUTPUT: &str = "check";
@@ -69,18 +73,6 @@ pub fn run<L: Lesson>(args: impl IntoIterator<Item = OsString>) -> Result<()> {
         return crate::app::window::run::<L>(&args, knobs, camera);
     }
     crate::app::headless::run::<L>(&args, knobs, camera)
-}
-
-/// Prints `text` on standard output. A reader that stops reading (`--help | head`) ends the output,
-/// not the program: Rust's `print!` panics on the closed pipe.
-pub fn say(text: impl std::fmt::Display) -> Result<()> {
-    use std::io::Write;
-    match write!(std::io::stdout().lock(), "{text}") {
-        Err(error) if error.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(error).context("cannot write to standard output")
-        }
-        _ => Ok(()),
-    }
 }
 
 /// Mesa's drivers print "error: XDG_RUNTIME_DIR is invalid or not set" to stderr when that variable is

@@ -536,7 +536,7 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
         // The steps depend on the knobs, not on the size: list them from a small frame.
         (request.width, request.height) = (16, 16);
         let steps = Headless::<L>::new(&request)?.steps();
-        return crate::app::cli::say(steps::describe(&steps));
+        return crate::app::output::say(steps::describe(&steps));
     }
     let headless = Headless::<L>::new(&request)?;
     if args.verbose {
@@ -559,7 +559,7 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
     if let Some(pixel) = args.pixel {
         let settings = Story::settings(&request.knobs, request.camera, L::CAMERA);
         let story = headless.story(pixel, settings)?;
-        crate::app::cli::say(story.text())?;
+        crate::app::output::say(story.text())?;
         if args.verbose {
             eprintln!("told the pixel's story in {:.0?}", start.elapsed());
         }

@@ -7,6 +7,8 @@ pub mod args;
 pub mod cli;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod output;
 pub mod pixel;
 pub mod runner;
 pub mod testing;

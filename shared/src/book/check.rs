@@ -7,8 +7,8 @@ use std::path::Path;
 use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
-use crate::app::cli::say;
 use crate::app::headless::{Headless, Request};
+use crate::app::output::say;
 use crate::book::flip::{self, Comparison, STRICT};
 use crate::book::shots::{self, BookShot, Setting};
 use crate::lesson::Lesson;

@@ -59,7 +59,7 @@ fn cut_short_child() {
     if std::env::var_os("CUT_SHORT_CHILD").is_none() {
         return;
     }
-    workbook::app::cli::say("cut short: begin\n").unwrap();
+    workbook::app::output::say("cut short: begin\n").unwrap();
     for _ in 0..200 {
         let listed = ["depth-test", "--list-knobs"].map(std::ffi::OsString::from);
         if let Err(error) = workbook::app::cli::run::<depth_test::DepthTest>(listed) {
