@@ -6,7 +6,7 @@ use anyhow::{Context, Result, bail};
 use image::RgbaImage;
 
 use crate::app::args::Args;
-use crate::app::runner::Runner;
+use crate::app::runner::{FrameRequest, Recorded, Runner};
 use crate::gpu::timing::StepTimer;
 use crate::gpu::views::DEPTH_COPY_FORMAT;
 use crate::gpu::{Gpu, HEADLESS_FORMAT, Offscreen};
@@ -215,9 +215,9 @@ impl<L: Lesson> Headless<L> {
             let runner = &self.runner;
             let color_view = self.color.create_view(&Default::default());
             for _ in 0..count {
-                let (encoder, _) =
-                    runner.record(&color_view, self.stop, Show::Color, &color_view)?;
-                runner.gpu.queue.submit([encoder.finish()]);
+                let request = FrameRequest::to(&color_view).stop(self.stop);
+                let recorded = runner.record(request.show(Show::Color, &color_view))?;
+                runner.gpu.queue.submit([recorded.encoder.finish()]);
                 runner
                     .gpu
                     .device
@@ -235,10 +235,8 @@ impl<L: Lesson> Headless<L> {
             let (runner, device) = (&self.runner, &self.runner.gpu.device);
             let color_view = self.color.create_view(&Default::default());
             let start = std::time::Instant::now();
-            let (encoder, steps) = match timer {
-                Some(timer) => runner.record_timed(&color_view, timer),
-                None => runner.record(&color_view, Stop::Last, Show::Color, &color_view)?,
-            };
+            let request = FrameRequest::to(&color_view).show(Show::Color, &color_view);
+            let Recorded { encoder, steps } = runner.record(request.timed(timer))?;
             let commands = encoder.finish();
             let recorded = start.elapsed();
             runner.gpu.queue.submit([commands]);
@@ -288,9 +286,9 @@ impl<L: Lesson> Headless<L> {
         let offscreen_view = view(&self.offscreen_picture);
         let mut readbacks = Vec::new();
         let mut failure = None;
-        let (encoder, steps) = runner.record_each_step(
-            &view(&self.color),
-            &mut |encoder, _, offscreen: Option<&Offscreen>| {
+        let color = view(&self.color);
+        let mut after_step =
+            |encoder: &mut wgpu::CommandEncoder, _, offscreen: Option<&Offscreen>| {
                 // A step drawn into the lesson's own target is seen in that target's buffers.
                 let shown = match offscreen {
                     Some(target) => [
@@ -316,8 +314,9 @@ impl<L: Lesson> Headless<L> {
                 let pictures = [color, &self.depth_picture, &self.stencil_picture];
                 let all = wgpu::TextureAspect::All;
                 readbacks.push(pictures.map(|t| Readback::new(device, encoder, t, all, 4)));
-            },
-        );
+            };
+        let request = FrameRequest::to(&color).each_step(&mut after_step);
+        let Recorded { encoder, steps } = runner.record(request)?;
         if let Some(error) = failure {
             return Err(error);
         }
@@ -348,7 +347,8 @@ impl<L: Lesson> Headless<L> {
             Show::Stencil => &self.stencil_picture,
         };
         let output = shown.create_view(&Default::default());
-        let (mut encoder, _) = runner.record(&color_view, self.stop, self.show, &output)?;
+        let request = FrameRequest::to(&color_view).stop(self.stop);
+        let mut encoder = runner.record(request.show(self.show, &output))?.encoder;
 
         let all = wgpu::TextureAspect::All;
         let mut readbacks = vec![Readback::new(device, &mut encoder, shown, all, 4)];

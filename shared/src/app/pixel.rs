@@ -13,7 +13,7 @@
 
 use anyhow::{Result, bail};
 
-use crate::app::runner::Runner;
+use crate::app::runner::{FrameRequest, Recorded, Runner};
 use crate::gpu::pass::{Draw, Probe, Probing};
 use crate::gpu::readback::read_buffer;
 use crate::gpu::views::{DEPTH_COPY_FORMAT, STENCIL_VALUES_FORMAT};
@@ -44,7 +44,8 @@ pub fn draws<L: Lesson>(runner: &Runner<L>, color: &wgpu::Texture) -> Vec<Draw> 
     let mut probe = Probe::new(&runner.gpu.device, (0, 0), 0);
     probe.start(Probing::Until(0));
     let color_view = color.create_view(&Default::default());
-    drop(runner.record_probed(&color_view, &mut probe, &mut |_, _, _| {}));
+    let request = FrameRequest::to(&color_view).probed(&mut probe);
+    drop(runner.record(request.each_step(&mut |_, _, _| {})));
     probe.draws
 }
 
@@ -56,6 +57,50 @@ pub async fn tell<L: Lesson>(
     pixel: (u32, u32),
     settings: String,
 ) -> Result<Story> {
+    check_pixel(runner, pixel)?;
+    let mut teller = Teller::new(runner, color, pixel)?;
+
+    // 1. The frame as the lesson draws it, the pixel read after every step and each draw in an
+    // occlusion query (did it pass?); then every draw silent in a query (does it reach the pixel?).
+    let watched = teller.watch().await?;
+
+    // 2. Each draw that reaches the pixel: the frame up to and with it (the pixel after it), and
+    // with it as its twins (its first fragment there, and how many it has).
+    let reaching: Vec<usize> = (0..teller.draw_count)
+        .filter(|&k| watched.covers[k] > 0)
+        .collect();
+    let mut runs: Vec<Probing> = reaching
+        .iter()
+        .flat_map(|&k| [Probing::Until(k), Probing::Twin(k, 0)])
+        .collect();
+    let first = teller.read(&runs).await?;
+    // 3. The other fragments of draws whose triangles overlap at the pixel.
+    let more: Vec<Probing> = reaching
+        .iter()
+        .enumerate()
+        .flat_map(|(slot, &k)| {
+            let count = first[2 * slot + 1].stencil.min(MAX_FRAGMENTS) as u32;
+            (1..count).map(move |fragment| Probing::Twin(k, fragment))
+        })
+        .collect();
+    let others = teller.read(&more).await?;
+    runs.extend(more);
+    let reads = Reads {
+        runs,
+        read: first.into_iter().chain(others).collect(),
+    };
+
+    Ok(Story {
+        lesson: L::NAME,
+        pixel,
+        size: runner.depth_stencil.size(),
+        settings,
+        steps: story_steps(watched, &reads, &teller.reader),
+    })
+}
+
+/// Refuses a pixel outside the picture, and a backend whose shaders cannot read the depth buffer.
+fn check_pixel<L: Lesson>(runner: &Runner<L>, pixel: (u32, u32)) -> Result<()> {
     let (width, height) = runner.depth_stencil.size();
     let (x, y) = pixel;
     if x >= width || y >= height {
@@ -71,92 +116,175 @@ pub async fn tell<L: Lesson>(
              cannot: use Vulkan, Metal, DirectX 12 or WebGPU"
         );
     }
-    let (gpu, device) = (&runner.gpu, &runner.gpu.device);
-    let color_view = color.create_view(&Default::default());
-    let reader = Reader::new(runner, color, pixel);
-    let frame = |probe: &mut Probe, probing| {
-        probe.start(probing);
-        runner
-            .record_probed(&color_view, probe, &mut |_, _, _| {})
-            .0
-    };
+    Ok(())
+}
 
-    // Count the draws first: the queries need room for them.
-    let mut probe = Probe::new(device, pixel, 0);
-    drop(frame(&mut probe, Probing::Until(0)));
-    let draw_count = probe.draws.len();
-    if 2 * draw_count > wgpu::QUERY_SET_MAX_QUERIES as usize {
-        bail!("this frame has {draw_count} draws: too many for a pixel's story");
+/// The frame, recorded again and again with a probe on one pixel: the runs that tell its story.
+struct Teller<'r, L: Lesson> {
+    runner: &'r Runner<L>,
+    reader: Reader<'r, L>,
+    color_view: wgpu::TextureView,
+    /// With room for a query per draw and one per draw's silent twin.
+    probe: Probe,
+    draw_count: usize,
+}
+
+/// What the first round saw: the frame's steps and draws as the lesson drew them, the pixel after
+/// each step, and each draw's occlusion counts.
+struct Watched {
+    steps: Vec<&'static str>,
+    /// Whether each step drew into a target of the lesson's own.
+    own_targets: Vec<bool>,
+    draws: Vec<Draw>,
+    /// The pixel after each step, a slot each (see [`Reader::texel`]).
+    step_bytes: Vec<u8>,
+    /// Each draw's count of fragments that passed both tests.
+    passed: Vec<u64>,
+    /// Each draw's silent twin's count: does the draw reach the pixel at all?
+    covers: Vec<u64>,
+}
+
+/// What the second and third rounds read: each run, and the pixel after it.
+struct Reads {
+    runs: Vec<Probing>,
+    read: Vec<Texel>,
+}
+
+impl<'r, L: Lesson> Teller<'r, L> {
+    fn new(runner: &'r Runner<L>, color: &'r wgpu::Texture, pixel: (u32, u32)) -> Result<Self> {
+        let device = &runner.gpu.device;
+        let color_view = color.create_view(&Default::default());
+        let reader = Reader::new(runner, color, pixel);
+        let mut teller = Self {
+            runner,
+            reader,
+            color_view,
+            probe: Probe::new(device, pixel, 0),
+            draw_count: 0,
+        };
+
+        // Count the draws first: the queries need room for them.
+        drop(teller.record(Probing::Until(0))?);
+        let draw_count = teller.probe.draws.len();
+        if 2 * draw_count > wgpu::QUERY_SET_MAX_QUERIES as usize {
+            bail!("this frame has {draw_count} draws: too many for a pixel's story");
+        }
+        teller.probe = Probe::new(device, pixel, draw_count);
+        teller.draw_count = draw_count;
+        Ok(teller)
     }
-    let mut probe = Probe::new(device, pixel, draw_count);
 
-    // 1. The frame as the lesson draws it, the pixel read after every step and each draw in an
-    // occlusion query (did it pass?); then every draw silent in a query (does it reach the pixel?).
-    let step_count = runner.steps().len();
-    let step_readback = readback_buffer(device, step_count);
-    let (mut own_targets, mut failure) = (Vec::new(), None);
-    probe.start(Probing::Watch);
-    let (watched, steps) =
-        runner.record_probed(&color_view, &mut probe, &mut |encoder, index, offscreen| {
+    /// The frame recorded once, probed as `probing` says.
+    fn record(&mut self, probing: Probing) -> Result<wgpu::CommandEncoder> {
+        self.probe.start(probing);
+        let request = FrameRequest::to(&self.color_view).probed(&mut self.probe);
+        Ok(self
+            .runner
+            .record(request.each_step(&mut |_, _, _| {}))?
+            .encoder)
+    }
+
+    /// The first round: the frame watched, the pixel read after every step, and then covered.
+    async fn watch(&mut self) -> Result<Watched> {
+        let (runner, device) = (self.runner, &self.runner.gpu.device);
+        let step_count = runner.steps().len();
+        let step_readback = readback_buffer(device, step_count);
+        let (mut own_targets, mut failure) = (Vec::new(), None);
+        self.probe.start(Probing::Watch);
+        let reader = &self.reader;
+        let request = FrameRequest::to(&self.color_view).probed(&mut self.probe);
+        let Recorded {
+            encoder: watched,
+            steps,
+        } = runner.record(request.each_step(&mut |encoder, index, offscreen| {
             own_targets.push(offscreen.is_some());
             if let Err(error) = reader.copy(encoder, &step_readback, index) {
                 failure.get_or_insert(error);
             }
-        });
-    if let Some(error) = failure {
-        return Err(error);
-    }
-    let draws = std::mem::take(&mut probe.draws);
-    if steps.len() != step_count || draws.len() != draw_count {
-        bail!("the lesson drew another frame the second time: a pixel's story needs the same one");
-    }
-    let mut covered = frame(&mut probe, Probing::Cover);
-    let queries = 2 * draw_count as u32;
-    let query_bytes = queries.max(1) as u64 * 8;
-    let resolved = buffer(
-        device,
-        query_bytes,
-        wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
-    );
-    let counts = buffer(
-        device,
-        query_bytes,
-        wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-    );
-    if queries > 0 {
-        covered.resolve_query_set(&probe.queries, 0..queries, &resolved, 0);
-        covered.copy_buffer_to_buffer(&resolved, 0, &counts, 0, query_bytes);
-    }
-    // Each recording ends its passes before the next begins: one submission keeps their order.
-    gpu.queue.submit([watched.finish(), covered.finish()]);
-    let step_bytes = read_buffer(device, &step_readback).await?;
-    let counts: Vec<u64> = bytemuck::pod_collect_to_vec(&read_buffer(device, &counts).await?);
-    let (passed, covers) = counts.split_at(draw_count);
-
-    // 2. Each draw that reaches the pixel: the frame up to and with it (the pixel after it), and
-    // with it as its twins (its first fragment there, and how many it has).
-    let reaching: Vec<usize> = (0..draw_count).filter(|&k| covers[k] > 0).collect();
-    let mut runs: Vec<Probing> = reaching
-        .iter()
-        .flat_map(|&k| [Probing::Until(k), Probing::Twin(k, 0)])
-        .collect();
-    let first = read(runner, &reader, &mut probe, &color_view, &runs).await?;
-    // 3. The other fragments of draws whose triangles overlap at the pixel.
-    let more: Vec<Probing> = reaching
-        .iter()
-        .enumerate()
-        .flat_map(|(slot, &k)| {
-            let count = first[2 * slot + 1].stencil.min(MAX_FRAGMENTS) as u32;
-            (1..count).map(move |fragment| Probing::Twin(k, fragment))
+        }))?;
+        if let Some(error) = failure {
+            return Err(error);
+        }
+        let draws = std::mem::take(&mut self.probe.draws);
+        if steps.len() != step_count || draws.len() != self.draw_count {
+            bail!(
+                "the lesson drew another frame the second time: a pixel's story needs the same one"
+            );
+        }
+        let mut covered = self.record(Probing::Cover)?;
+        let (_resolved, counts) = self.copy_counts(&mut covered);
+        // Each recording ends its passes before the next begins: one submission keeps their order.
+        runner
+            .gpu
+            .queue
+            .submit([watched.finish(), covered.finish()]);
+        let step_bytes = read_buffer(device, &step_readback).await?;
+        let counts: Vec<u64> = bytemuck::pod_collect_to_vec(&read_buffer(device, &counts).await?);
+        let (passed, covers) = counts.split_at(self.draw_count);
+        Ok(Watched {
+            steps,
+            own_targets,
+            draws,
+            step_bytes,
+            passed: passed.to_vec(),
+            covers: covers.to_vec(),
         })
-        .collect();
-    let others = read(runner, &reader, &mut probe, &color_view, &more).await?;
-    runs.extend(more);
-    let read: Vec<Texel> = first.into_iter().chain(others).collect();
-    let fragments = |k: usize| -> Vec<Fragment> {
-        let mut twins: Vec<(u32, Texel)> = runs
+    }
+
+    /// At the end of `encoder`, resolves the probe's occlusion queries (every draw watched, then
+    /// every draw covered) and copies them into a buffer to read. Returns the buffer they resolve
+    /// into (kept until the submission) and the one to read.
+    fn copy_counts(&self, encoder: &mut wgpu::CommandEncoder) -> (wgpu::Buffer, wgpu::Buffer) {
+        let device = &self.runner.gpu.device;
+        let queries = 2 * self.draw_count as u32;
+        let query_bytes = queries.max(1) as u64 * 8;
+        let resolved = buffer(
+            device,
+            query_bytes,
+            wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+        );
+        let counts = buffer(
+            device,
+            query_bytes,
+            wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        );
+        if queries > 0 {
+            encoder.resolve_query_set(&self.probe.queries, 0..queries, &resolved, 0);
+            encoder.copy_buffer_to_buffer(&resolved, 0, &counts, 0, query_bytes);
+        }
+        (resolved, counts)
+    }
+
+    /// Records the frame once per entry of `runs`, probed as it says, reads the pixel after each run,
+    /// and returns what was read, in order.
+    async fn read(&mut self, runs: &[Probing]) -> Result<Vec<Texel>> {
+        if runs.is_empty() {
+            return Ok(Vec::new());
+        }
+        let device = &self.runner.gpu.device;
+        let readback = readback_buffer(device, runs.len());
+        let mut buffers = Vec::with_capacity(runs.len());
+        for (slot, &probing) in runs.iter().enumerate() {
+            let mut encoder = self.record(probing)?;
+            self.reader.copy(&mut encoder, &readback, slot)?;
+            buffers.push(encoder.finish());
+        }
+        self.runner.gpu.queue.submit(buffers);
+        let bytes = read_buffer(device, &readback).await?;
+        Ok((0..runs.len())
+            .map(|slot| self.reader.texel(&bytes, slot))
+            .collect())
+    }
+}
+
+impl Reads {
+    /// What each of draw `k`'s fragments at the pixel brought (read from its twins), in the order
+    /// the GPU met them.
+    fn fragments(&self, k: usize) -> Vec<Fragment> {
+        let mut twins: Vec<(u32, Texel)> = self
+            .runs
             .iter()
-            .zip(&read)
+            .zip(&self.read)
             .filter_map(|(probing, texel)| match probing {
                 Probing::Twin(draw, fragment) if *draw == k => Some((*fragment, *texel)),
                 _ => None,
@@ -170,12 +298,29 @@ pub async fn tell<L: Lesson>(
                 depth: texel.depth,
             })
             .collect()
-    };
-    let after = |k: usize| {
-        let found = runs.iter().position(|p| *p == Probing::Until(k));
-        found.map(|index| read[index])
-    };
+    }
 
+    /// The pixel after draw `k`; none where the draw does not reach the pixel.
+    fn after(&self, k: usize) -> Option<Texel> {
+        let found = self.runs.iter().position(|p| *p == Probing::Until(k));
+        found.map(|index| self.read[index])
+    }
+}
+
+/// The story's steps: the pixel after each, and each draw's part in it.
+fn story_steps<L: Lesson>(
+    watched: Watched,
+    reads: &Reads,
+    reader: &Reader<'_, L>,
+) -> Vec<StepStory> {
+    let Watched {
+        steps,
+        own_targets,
+        draws,
+        step_bytes,
+        passed,
+        ..
+    } = watched;
     let mut story_steps: Vec<StepStory> = steps
         .iter()
         .enumerate()
@@ -193,8 +338,8 @@ pub async fn tell<L: Lesson>(
             Some(previous) => previous.after,
             None => story_steps[draw.step.saturating_sub(1)].after,
         };
-        let (after, fragments) = match after(index) {
-            Some(after) => (after, fragments(index)),
+        let (after, fragments) = match reads.after(index) {
+            Some(after) => (after, reads.fragments(index)),
             None => (before, Vec::new()),
         };
         story_steps[draw.step].draws.push(DrawStory {
@@ -208,41 +353,7 @@ pub async fn tell<L: Lesson>(
             passed: passed[index] > 0,
         });
     }
-    Ok(Story {
-        lesson: L::NAME,
-        pixel,
-        size: runner.depth_stencil.size(),
-        settings,
-        steps: story_steps,
-    })
-}
-
-/// Records the frame once per entry of `runs`, probed as it says, reads the pixel after each run,
-/// and returns what was read, in order.
-async fn read<L: Lesson>(
-    runner: &Runner<L>,
-    reader: &Reader<'_, L>,
-    probe: &mut Probe,
-    color_view: &wgpu::TextureView,
-    runs: &[Probing],
-) -> Result<Vec<Texel>> {
-    if runs.is_empty() {
-        return Ok(Vec::new());
-    }
-    let device = &runner.gpu.device;
-    let readback = readback_buffer(device, runs.len());
-    let mut buffers = Vec::with_capacity(runs.len());
-    for (slot, &probing) in runs.iter().enumerate() {
-        probe.start(probing);
-        let (mut encoder, _) = runner.record_probed(color_view, probe, &mut |_, _, _| {});
-        reader.copy(&mut encoder, &readback, slot)?;
-        buffers.push(encoder.finish());
-    }
-    runner.gpu.queue.submit(buffers);
-    let bytes = read_buffer(device, &readback).await?;
-    Ok((0..runs.len())
-        .map(|slot| reader.texel(&bytes, slot))
-        .collect())
+    story_steps
 }
 
 /// The most fragments of one draw a story reads at its pixel.

@@ -92,41 +92,107 @@ impl<L: Lesson> Runner<L> {
             .steps
     }
 
-    /// Records the lesson's frame into `color` up to the step `stop` names, and paints `output`
-    /// with the buffer `show` asks for (for [`Show::Color`], `output` is `color` itself, or where a
-    /// step drawn into a lesson's own target is shown). Returns the encoder, for the caller to add
-    /// copies to and submit, with the frame's step names. Fails on a step past the end.
-    pub fn record(
-        &self,
-        color: &wgpu::TextureView,
-        stop: Stop,
-        show: Show,
-        output: &wgpu::TextureView,
-    ) -> Result<(wgpu::CommandEncoder, Vec<&'static str>)> {
+    /// Records the frame `request` asks for: the one question every runner asks once a frame (the
+    /// window, the headless runner, the web page, the workbench, each round of a pixel's story).
+    /// The caller adds its copies to the encoder and submits it. Fails on a step past the end.
+    pub fn record(&self, request: FrameRequest<'_>) -> Result<Recorded> {
         self.update();
+        let FrameRequest {
+            color,
+            stop,
+            output,
+            pictures,
+            timer,
+            probe,
+            mut after_step,
+        } = request;
+        // Looking between the steps needs a pass each; otherwise as the runner records.
+        let passes = match after_step {
+            Some(_) => Passes::PerStep,
+            None => self.passes,
+        };
         let (mut shown, mut failure) = (false, None);
         // A frame that stops after a step drawn into a lesson's own target shows that target.
         let mut present =
             |encoder: &mut wgpu::CommandEncoder, index, target: Option<&Offscreen>| {
+                if let Some(after_step) = after_step.as_mut() {
+                    after_step(encoder, index, target);
+                }
                 if let (Some(target), Stop::After(number)) = (target, stop)
                     && index + 1 == number
                 {
                     shown = true;
-                    if let Err(error) = self.show_offscreen(encoder, show, target, output) {
-                        failure.get_or_insert(error);
+                    let mut paint = |show, output| {
+                        if let Err(error) = self.show_offscreen(encoder, show, target, output) {
+                            failure.get_or_insert(error);
+                        }
+                    };
+                    if let Some((show, output)) = output {
+                        paint(show, output);
+                    }
+                    for (show, picture) in self.pictures(pictures) {
+                        paint(show, picture);
                     }
                 }
             };
-        let frame = self.frame(color, stop.count(), Some(&mut present), self.passes);
+        let targets = (color, &self.depth_stencil);
+        let cameras = (self.camera, self.view());
+        let (stop_count, present) = (stop.count(), Some(&mut present as AfterStep<'_>));
+        let frame = Frame::new(
+            &self.gpu,
+            &self.scene,
+            cameras,
+            targets,
+            stop_count,
+            present,
+        );
+        let mut frame = frame.with_passes(passes);
+        frame.timer = timer;
+        if let Some(probe) = probe {
+            frame = frame.with_probe(probe);
+        }
+        self.lesson.render(&mut frame);
         let (mut encoder, steps) = frame.finish();
         if let Some(error) = failure {
             return Err(error);
         }
         stop.resolve(&steps)?;
-        if !shown {
-            self.show(&mut encoder, show, output)?;
+        if let Some(timer) = timer {
+            // The steps after the stop were named but not recorded.
+            timer.resolve(&mut encoder, steps.len().min(stop.count()));
         }
-        Ok((encoder, steps))
+        if !shown {
+            if let Some((show, output)) = output {
+                self.show(&mut encoder, show, output)?;
+            }
+            for (show, picture) in self.pictures(pictures) {
+                self.show(&mut encoder, show, picture)?;
+            }
+        }
+        Ok(Recorded { encoder, steps })
+    }
+
+    /// The depth and stencil pictures asked for, each with what it shows (none of depth where the
+    /// backend cannot read depth in a shader).
+    fn pictures<'p>(&self, pictures: Option<Pictures<'p>>) -> Vec<(Show, &'p wgpu::TextureView)> {
+        let Some(Pictures {
+            depth,
+            stencil,
+            raw_depth,
+        }) = pictures
+        else {
+            return Vec::new();
+        };
+        let depth_show = if raw_depth {
+            Show::RawDepth
+        } else {
+            Show::Depth
+        };
+        let depth = self.can_show(Show::Depth).then_some((depth_show, depth));
+        depth
+            .into_iter()
+            .chain([(Show::Stencil, stencil)])
+            .collect()
     }
 
     /// Draws the lesson alone into `target` of `size` pixels (a window's surface with the panel
@@ -139,8 +205,10 @@ impl<L: Lesson> Runner<L> {
         show: Show,
     ) -> Result<()> {
         self.resize(width, height);
-        let (encoder, _) = self.record(target, stop, show, target)?;
-        self.gpu.queue.submit([encoder.finish()]);
+        let request = FrameRequest::to(target).stop(stop).show(show, target);
+        self.gpu
+            .queue
+            .submit([self.record(request)?.encoder.finish()]);
         Ok(())
     }
 
@@ -155,145 +223,13 @@ impl<L: Lesson> Runner<L> {
         show: Show,
     ) -> Result<()> {
         self.resize(size.0, size.1);
-        let (mut encoder, _) = self.record(picture, stop, show, picture)?;
+        let request = FrameRequest::to(picture).stop(stop).show(show, picture);
+        let mut encoder = self.record(request)?.encoder;
         let (device, pixelated) = (&self.gpu.device, wgpu::FilterMode::Nearest);
         let blit = &self.scene.blit;
         blit.draw_in(device, &mut encoder, picture, target, None, pixelated);
         self.gpu.queue.submit([encoder.finish()]);
         Ok(())
-    }
-
-    /// Records the frame into `color` up to `stop` and, given `pictures`, paints the depth and stencil
-    /// buffers, as they are then, into them (the depth linearised, or the stored values with
-    /// `raw_depth`; not at all where the backend cannot read depth in a shader). Where the frame stops
-    /// after a step drawn into a lesson's own target, all three show that target's buffers. With a
-    /// timer, every step's pass writes its timestamps, resolved for [`StepTimer::read`]. The window's
-    /// panel shows the three side by side.
-    pub fn record_buffers(
-        &self,
-        color: &wgpu::TextureView,
-        pictures: Option<[&wgpu::TextureView; 2]>,
-        stop: Stop,
-        raw_depth: bool,
-        timer: Option<&StepTimer>,
-    ) -> Result<(wgpu::CommandEncoder, Vec<&'static str>)> {
-        self.update();
-        let depth_show = if raw_depth {
-            Show::RawDepth
-        } else {
-            Show::Depth
-        };
-        let can_depth = self.can_show(Show::Depth);
-        let (mut shown, mut failure) = (false, None);
-        let mut present =
-            |encoder: &mut wgpu::CommandEncoder, index, target: Option<&Offscreen>| {
-                if let (Some(target), Stop::After(number)) = (target, stop)
-                    && index + 1 == number
-                {
-                    shown = true;
-                    let mut paint = |show, output| {
-                        if let Err(error) = self.show_offscreen(encoder, show, target, output) {
-                            failure.get_or_insert(error);
-                        }
-                    };
-                    paint(Show::Color, color);
-                    if let Some([depth, stencil]) = pictures {
-                        if can_depth {
-                            paint(depth_show, depth);
-                        }
-                        paint(Show::Stencil, stencil);
-                    }
-                }
-            };
-        let targets = (color, &self.depth_stencil);
-        let cameras = (self.camera, self.view());
-        let mut frame = Frame::new(
-            &self.gpu,
-            &self.scene,
-            cameras,
-            targets,
-            stop.count(),
-            Some(&mut present),
-        )
-        .with_passes(self.passes);
-        frame.timer = timer;
-        self.lesson.render(&mut frame);
-        let (mut encoder, steps) = frame.finish();
-        if let Some(error) = failure {
-            return Err(error);
-        }
-        stop.resolve(&steps)?;
-        if let Some(timer) = timer {
-            // The steps after the stop were named but not recorded.
-            timer.resolve(&mut encoder, steps.len().min(stop.count()));
-        }
-        if let (false, Some([depth, stencil])) = (shown, pictures) {
-            if can_depth {
-                self.show(&mut encoder, depth_show, depth)?;
-            }
-            self.show(&mut encoder, Show::Stencil, stencil)?;
-        }
-        Ok((encoder, steps))
-    }
-
-    /// Records the whole frame into `color` with each step's pass writing its timestamps into
-    /// `timer`, which is then resolved: read the times with [`StepTimer::read`] after submitting.
-    pub fn record_timed(
-        &self,
-        color: &wgpu::TextureView,
-        timer: &StepTimer,
-    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
-        self.update();
-        let mut frame = Frame::new(
-            &self.gpu,
-            &self.scene,
-            (self.camera, self.view()),
-            (color, &self.depth_stencil),
-            usize::MAX,
-            None,
-        );
-        frame.timer = Some(timer);
-        self.lesson.render(&mut frame);
-        let (mut encoder, steps) = frame.finish();
-        timer.resolve(&mut encoder, steps.len());
-        (encoder, steps)
-    }
-
-    /// Records the whole frame into `color`, calling `after_step` after every step: one frame that
-    /// shows each step's buffers (`--film`).
-    pub fn record_each_step(
-        &self,
-        color: &wgpu::TextureView,
-        after_step: AfterStep<'_>,
-    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
-        self.update();
-        let frame = self.frame(color, usize::MAX, Some(after_step), Passes::PerStep);
-        frame.finish()
-    }
-
-    /// Records the whole frame into `color` with `probe` watching its pixel (a pass a step, each
-    /// kept to that pixel; every draw drawn as the probe says), calling `after_step` after every
-    /// step: one frame of a pixel's story.
-    pub fn record_probed(
-        &self,
-        color: &wgpu::TextureView,
-        probe: &mut Probe,
-        after_step: AfterStep<'_>,
-    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
-        self.update();
-        let targets = (color, &self.depth_stencil);
-        let cameras = (self.camera, self.view());
-        let mut frame = Frame::new(
-            &self.gpu,
-            &self.scene,
-            cameras,
-            targets,
-            usize::MAX,
-            Some(after_step),
-        )
-        .with_probe(probe);
-        self.lesson.render(&mut frame);
-        frame.finish()
     }
 
     /// Copies one pixel of the depth buffer into the same pixel of `target` (R32Float).
@@ -443,6 +379,93 @@ impl<L: Lesson> Runner<L> {
         pipelines.copy(encoder, target, bind_group);
         Ok(())
     }
+}
+
+/// What a runner is asked for one frame: where the colours go, where the frame stops, which
+/// buffers are painted to be seen, and whether it is timed, probed or looked into after each step.
+pub struct FrameRequest<'r> {
+    color: &'r wgpu::TextureView,
+    stop: Stop,
+    output: Option<(Show, &'r wgpu::TextureView)>,
+    pictures: Option<Pictures<'r>>,
+    timer: Option<&'r StepTimer>,
+    probe: Option<&'r mut Probe>,
+    after_step: Option<AfterStep<'r>>,
+}
+
+/// The depth and stencil buffers painted to be seen (the window's panel shows them small).
+#[derive(Clone, Copy)]
+struct Pictures<'p> {
+    depth: &'p wgpu::TextureView,
+    stencil: &'p wgpu::TextureView,
+    /// The stored depth values rather than the linearised depth.
+    raw_depth: bool,
+}
+
+impl<'r> FrameRequest<'r> {
+    /// The whole frame, its colours into `color`, nothing else.
+    pub fn to(color: &'r wgpu::TextureView) -> Self {
+        Self {
+            color,
+            stop: Stop::Last,
+            output: None,
+            pictures: None,
+            timer: None,
+            probe: None,
+            after_step: None,
+        }
+    }
+
+    /// Stopped after the step `stop` names.
+    pub fn stop(self, stop: Stop) -> Self {
+        Self { stop, ..self }
+    }
+
+    /// With `output` painted with the buffer `show` asks for, as it is where the frame stops (for
+    /// [`Show::Color`], `output` is `color` itself; where the frame stops after a step drawn into
+    /// a lesson's own target, that target's buffer).
+    pub fn show(self, show: Show, output: &'r wgpu::TextureView) -> Self {
+        let output = Some((show, output));
+        Self { output, ..self }
+    }
+
+    /// With the depth and stencil buffers, as they are where the frame stops, painted into
+    /// `depth` (linearised, or the stored values with `raw_depth`; not at all where the backend
+    /// cannot read depth in a shader) and `stencil`.
+    pub fn pictures(self, [depth, stencil]: [&'r wgpu::TextureView; 2], raw_depth: bool) -> Self {
+        let pictures = Some(Pictures {
+            depth,
+            stencil,
+            raw_depth,
+        });
+        Self { pictures, ..self }
+    }
+
+    /// With every step's pass writing its timestamps into `timer`, resolved for
+    /// [`StepTimer::read`] (a pass a step).
+    pub fn timed(self, timer: Option<&'r StepTimer>) -> Self {
+        Self { timer, ..self }
+    }
+
+    /// With `probe` watching its pixel (a pass a step, each kept to that pixel; every draw drawn as
+    /// the probe says): a round of a pixel's story.
+    pub fn probed(self, probe: &'r mut Probe) -> Self {
+        let probe = Some(probe);
+        Self { probe, ..self }
+    }
+
+    /// Calling `after_step` after every step (a pass a step): the film of every step's buffers.
+    pub fn each_step(self, after_step: AfterStep<'r>) -> Self {
+        let after_step = Some(after_step);
+        Self { after_step, ..self }
+    }
+}
+
+/// What a runner gives back for a frame: its commands, for the caller to add its copies to and
+/// submit, and the frame's step names.
+pub struct Recorded {
+    pub encoder: wgpu::CommandEncoder,
+    pub steps: Vec<&'static str>,
 }
 
 fn depth_bind_group(gpu: &Gpu, scene: &Scene, target: &DepthStencil) -> Option<wgpu::BindGroup> {

@@ -478,3 +478,62 @@ fn the_view_beside_the_panel_is_the_lessons_render() {
         }
     }
 }
+
+/// A texture egui makes and lets go of within one frame (an image shown once: its handle dropped
+/// in the pass that painted it) is in that frame's shapes and in its list of textures to free. The
+/// panel's painter frees it only after the frame is submitted, as egui-wgpu's own painter does:
+/// destroyed before, the frame's commands use a destroyed texture, which wgpu's validation rejects.
+#[test]
+fn a_texture_made_and_dropped_in_one_frame_is_freed_after_the_frame() {
+    use workbook::app::workbench::painter::PanelPainter;
+    let gpu = workbook::Gpu::shared_headless(None, false).unwrap();
+    let format = workbook::gpu::HEADLESS_FORMAT;
+    let size = (64, 48);
+    let target = workbook::gpu::target_texture(
+        &gpu.device,
+        "painter test target",
+        format,
+        size,
+        wgpu::TextureUsages::COPY_SRC,
+    );
+    let view = target.create_view(&Default::default());
+    let mut painter = PanelPainter::new(&gpu.device, format);
+    let ctx = egui::Context::default();
+    let input = egui::RawInput {
+        screen_rect: Some(egui::Rect::from_min_size(
+            egui::Pos2::ZERO,
+            egui::vec2(64.0, 48.0),
+        )),
+        ..Default::default()
+    };
+    let output = ctx.run_ui(input, |ui| {
+        let picture = egui::ColorImage::new([4, 4], vec![egui::Color32::RED; 16]);
+        let once = ui
+            .ctx()
+            .load_texture("shown once", picture, Default::default());
+        ui.image((once.id(), egui::vec2(32.0, 32.0)));
+    });
+    let mut output = output;
+    let jobs = ctx.tessellate(output.shapes.clone(), output.pixels_per_point);
+    let drawn = jobs.iter().any(|job| match &job.primitive {
+        egui::epaint::Primitive::Mesh(mesh) => mesh.texture_id != egui::TextureId::default(),
+        egui::epaint::Primitive::Callback(_) => false,
+    });
+    let freed = !output.textures_delta.free.is_empty();
+    if !(drawn && freed) {
+        output.textures_delta.clear();
+        panic!("the frame should paint a texture it frees (painted {drawn}, freed {freed})");
+    }
+    gpu.scoped(|| {
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        painter.update_textures(&gpu, &output.textures_delta);
+        let ppp = output.pixels_per_point;
+        painter.paint(&gpu, &ctx, &mut encoder, output.shapes, ppp, (&view, size));
+        painter.submit(&gpu, encoder, output.textures_delta);
+        gpu.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(anyhow::Error::from)?;
+        Ok(())
+    })
+    .expect("painting a texture freed in the same frame");
+}
