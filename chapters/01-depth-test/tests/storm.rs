@@ -367,6 +367,16 @@ struct Expected {
 impl Expected {
     const SHOWS: [&'static str; 3] = ["color", "depth", "stencil"];
 
+    /// The window as it opens, on a frame of `steps` steps: every knob and view at its default.
+    fn at_defaults(steps: usize) -> Expected {
+        Expected {
+            depth: default_depth(),
+            step: steps,
+            steps,
+            show: 0,
+        }
+    }
+
     fn press(&mut self, key: &str) {
         let values = depth_test::KNOBS[0].values.len();
         match key {
@@ -387,6 +397,166 @@ impl Expected {
             format!(" [1] depth={depth} "),
         ]
     }
+
+    /// The xdotool chain of keys that undoes the keys' net effect: the knob on round to its
+    /// default, the steps on to the last, the buffers on round to colour.
+    fn undoing_keys(&self) -> Vec<String> {
+        let mut reset = vec!["key".to_string(), "--delay".into(), "0".into()];
+        let values = depth_test::KNOBS[0].values.len();
+        let forward = (default_depth() + values - self.depth) % values;
+        reset.extend(std::iter::repeat_n("1".to_string(), forward));
+        reset.extend(std::iter::repeat_n(
+            "bracketright".into(),
+            self.steps - self.step,
+        ));
+        reset.extend(std::iter::repeat_n("Tab".into(), (3 - self.show) % 3));
+        reset
+    }
+}
+
+/// The index of the `depth` knob's default value.
+fn default_depth() -> usize {
+    let depth = &depth_test::KNOBS[0];
+    depth
+        .values
+        .iter()
+        .position(|v| *v == depth.default)
+        .unwrap()
+}
+
+/// The storm: xdotool chains of resizes, hides and shows, and keys, sent to one window, with the
+/// count of each.
+struct Storm {
+    window: String,
+    rng: Rng,
+    /// The chain being gathered, sent every fifth resize.
+    chain: Vec<String>,
+    resizes: usize,
+    tiny: usize,
+    huge: usize,
+    hides: usize,
+    presses: usize,
+}
+
+impl Storm {
+    const RESIZES: usize = 500;
+    const KEYS: [&'static str; 5] = ["1", "shift+1", "bracketleft", "bracketright", "Tab"];
+
+    fn new(window: &str) -> Storm {
+        Storm {
+            window: window.to_string(),
+            rng: Rng(0x5eed_5707),
+            chain: Vec::new(),
+            resizes: 0,
+            tiny: 0,
+            huge: 0,
+            hides: 0,
+            presses: 0,
+        }
+    }
+
+    /// Sends the whole storm to `lesson`, keeping `expected` up with the keys pressed.
+    fn blow(&mut self, lesson: &mut Running, expected: &mut Expected) {
+        while self.resizes < Self::RESIZES {
+            self.resize();
+            self.resizes += 1;
+            if !self.resizes.is_multiple_of(5) {
+                continue;
+            }
+            if self.resizes % 50 == 25 {
+                self.hide_and_show();
+            }
+            // Between some of the resizes, a few keys.
+            self.press_keys(expected);
+            // A breath now and then, for frames to be drawn at these sizes.
+            self.chain.extend(["sleep".into(), "0.03".into()]);
+            lesson.xdotool(&self.chain);
+            self.chain.clear();
+            if self.resizes.is_multiple_of(100) {
+                lesson.assert_alive(&format!("after {} resizes", self.resizes));
+            }
+        }
+        if !self.chain.is_empty() {
+            lesson.xdotool(&self.chain);
+        }
+    }
+
+    /// One resize to a random size.
+    fn resize(&mut self) {
+        let rng = &mut self.rng;
+        // Mostly anything up to most of Xvfb's default 1280×1024 screen; now and then 1×1, and
+        // now and then wider or taller than the GPU's textures may be (X's limit is 32767).
+        let (width, height) = match rng.below(40) {
+            0 | 1 => (1, 1),
+            2 => (1 + rng.below(3), 1 + rng.below(3)),
+            3 => (32_000, 1 + rng.below(8)),
+            4 => (1 + rng.below(8), 32_000),
+            _ => (1 + rng.below(1100), 1 + rng.below(900)),
+        };
+        self.tiny += usize::from(width * height == 1);
+        self.huge += usize::from(width.max(height) == 32_000);
+        self.chain.extend([
+            "windowsize".into(),
+            self.window.clone(),
+            width.to_string(),
+            height.to_string(),
+        ]);
+        if self.rng.below(3) == 0 {
+            // Time for a frame at this size, now and then.
+            self.chain.extend(["sleep".into(), "0.01".into()]);
+        }
+    }
+
+    /// The window hidden, resized while hidden, and shown again (counted as a resize).
+    fn hide_and_show(&mut self) {
+        // Minimised and restored: with a window manager `windowminimize` iconifies; plain Xvfb
+        // has none, and unmapping is what iconifying does to the window. Resized while hidden,
+        // too. Mapping it again loses the focus: take it back for the keys.
+        let (width, height) = (1 + self.rng.below(600), 1 + self.rng.below(500));
+        let w = &self.window;
+        for part in [
+            "windowminimize",
+            w,
+            "windowunmap",
+            "--sync",
+            w,
+            "windowsize",
+            w,
+            &width.to_string(),
+            &height.to_string(),
+            "sleep",
+            "0.05",
+            "windowmap",
+            "--sync",
+            w,
+            "windowfocus",
+            "--sync",
+            w,
+            // winit learns of modifiers held at the moment of focus a little late: a shift+1
+            // sent at once came as a plain 1. No hand is that quick; wait as one would.
+            "sleep",
+            "0.1",
+        ] {
+            self.chain.push(part.into());
+        }
+        self.resizes += 1;
+        self.hides += 1;
+    }
+
+    /// None to three random keys, each one `expected` is told of.
+    fn press_keys(&mut self, expected: &mut Expected) {
+        let count = self.rng.below(4);
+        if count > 0 {
+            self.chain
+                .extend(["key".into(), "--delay".into(), "0".into()]);
+            for _ in 0..count {
+                let key = Self::KEYS[self.rng.below(Self::KEYS.len() as u32) as usize];
+                expected.press(key);
+                self.chain.push(key.into());
+                self.presses += 1;
+            }
+        }
+    }
 }
 
 /// 500 resizes to random sizes (1×1 among them), hides and shows, and keys between them; then the
@@ -400,123 +570,23 @@ fn a_storm_of_resizes_and_keys_leaves_the_window_whole() {
         .stdout
         .lines()
         .count();
-    let depth = &depth_test::KNOBS[0];
-    let default_depth = depth.values.iter().position(|v| *v == depth.default);
-    let mut expected = Expected {
-        depth: default_depth.unwrap(),
-        step: steps,
-        steps,
-        show: 0,
-    };
+    let mut expected = Expected::at_defaults(steps);
     let defaults = expected.title();
 
     let start = Instant::now();
     let mut lesson = Running::start(&display.name, &["--size", "320x240"], &[]);
     let window = lesson.window();
-    let w = || window.clone();
     lesson.xdotool(&["windowfocus", "--sync", &window]);
-
-    let mut rng = Rng(0x5eed_5707);
-    let keys = ["1", "shift+1", "bracketleft", "bracketright", "Tab"];
-    let (mut resizes, mut tiny, mut huge, mut hides, mut presses) = (0, 0, 0, 0, 0);
-    let mut chain: Vec<String> = Vec::new();
-    while resizes < 500 {
-        // Mostly anything up to most of Xvfb's default 1280×1024 screen; now and then 1×1, and
-        // now and then wider or taller than the GPU's textures may be (X's limit is 32767).
-        let (width, height) = match rng.below(40) {
-            0 | 1 => (1, 1),
-            2 => (1 + rng.below(3), 1 + rng.below(3)),
-            3 => (32_000, 1 + rng.below(8)),
-            4 => (1 + rng.below(8), 32_000),
-            _ => (1 + rng.below(1100), 1 + rng.below(900)),
-        };
-        tiny += usize::from(width * height == 1);
-        huge += usize::from(width.max(height) == 32_000);
-        chain.extend([
-            "windowsize".into(),
-            w(),
-            width.to_string(),
-            height.to_string(),
-        ]);
-        if rng.below(3) == 0 {
-            // Time for a frame at this size, now and then.
-            chain.extend(["sleep".into(), "0.01".into()]);
-        }
-        resizes += 1;
-        if resizes % 5 != 0 {
-            continue;
-        }
-        if resizes % 50 == 25 {
-            // Minimised and restored: with a window manager `windowminimize` iconifies; plain Xvfb
-            // has none, and unmapping is what iconifying does to the window. Resized while hidden,
-            // too. Mapping it again loses the focus: take it back for the keys.
-            let (width, height) = (1 + rng.below(600), 1 + rng.below(500));
-            for part in [
-                "windowminimize",
-                &w(),
-                "windowunmap",
-                "--sync",
-                &w(),
-                "windowsize",
-                &w(),
-                &width.to_string(),
-                &height.to_string(),
-                "sleep",
-                "0.05",
-                "windowmap",
-                "--sync",
-                &w(),
-                "windowfocus",
-                "--sync",
-                &w(),
-                // winit learns of modifiers held at the moment of focus a little late: a shift+1
-                // sent at once came as a plain 1. No hand is that quick; wait as one would.
-                "sleep",
-                "0.1",
-            ] {
-                chain.push(part.into());
-            }
-            resizes += 1;
-            hides += 1;
-        }
-        // Between some of the resizes, a few keys.
-        let count = rng.below(4);
-        if count > 0 {
-            chain.extend(["key".into(), "--delay".into(), "0".into()]);
-            for _ in 0..count {
-                let key = keys[rng.below(keys.len() as u32) as usize];
-                expected.press(key);
-                chain.push(key.into());
-                presses += 1;
-            }
-        }
-        // A breath now and then, for frames to be drawn at these sizes.
-        chain.extend(["sleep".into(), "0.03".into()]);
-        lesson.xdotool(&chain);
-        chain.clear();
-        if resizes % 100 == 0 {
-            lesson.assert_alive(&format!("after {resizes} resizes"));
-        }
-    }
-    if !chain.is_empty() {
-        lesson.xdotool(&chain);
-    }
+    let mut storm = Storm::new(&window);
+    storm.blow(&mut lesson, &mut expected);
     lesson.assert_alive("after the storm");
-    let storm = start.elapsed();
+    let storm_time = start.elapsed();
 
     // Every key counted, none lost or taken twice; then their net effect undone.
     lesson.xdotool(&["windowsize", "--sync", &window, "320", "240"]);
     assert_title(&window, &expected.title());
-    let mut reset = vec!["key".to_string(), "--delay".into(), "0".into()];
-    let values = depth.values.len();
-    let forward = (default_depth.unwrap() + values - expected.depth) % values;
-    reset.extend(std::iter::repeat_n("1".to_string(), forward));
-    reset.extend(std::iter::repeat_n(
-        "bracketright".into(),
-        steps - expected.step,
-    ));
-    reset.extend(std::iter::repeat_n("Tab".into(), (3 - expected.show) % 3));
-    presses += reset.len() - 3;
+    let reset = expected.undoing_keys();
+    storm.presses += reset.len() - 3;
     lesson.xdotool(&reset);
     assert_title(&window, &defaults);
     let share = assert_shows(&window, &expected_picture, "storm");
@@ -524,11 +594,19 @@ fn a_storm_of_resizes_and_keys_leaves_the_window_whole() {
 
     lesson.xdotool(&["windowfocus", "--sync", &window, "key", "Escape"]);
     let (code, _, stderr) = lesson.wait(Duration::from_secs(20));
+    let Storm {
+        resizes,
+        tiny,
+        huge,
+        hides,
+        presses,
+        ..
+    } = storm;
     eprintln!(
         "storm: {resizes} resizes ({tiny} to 1×1, {huge} to 32000 a side, {hides} hidden and \
          shown), {presses} keys in {:.1}s; then {:.2}% of the pixels off the headless render; \
          whole test {:.1}s",
-        storm.as_secs_f64(),
+        storm_time.as_secs_f64(),
         share * 100.0,
         start.elapsed().as_secs_f64()
     );

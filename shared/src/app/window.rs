@@ -94,6 +94,26 @@ impl<L: Lesson> App<'_, L> {
         event_loop.exit();
     }
 
+    /// Draws a frame and counts it; with `--frames`, asks for the next until there are that many.
+    fn redraw_requested(&mut self, event_loop: &ActiveEventLoop) -> Result<()> {
+        let Some(state) = self.state.as_mut() else {
+            return Ok(());
+        };
+        if state.redraw()? {
+            self.frames += 1;
+            // `RUST_LOG=workbook::frames=debug` lists the frames: a test checks that
+            // an idle window draws none.
+            log::debug!(target: "workbook::frames", "frame {} drawn", self.frames);
+        }
+        match self.args.frames {
+            Some(limit) if self.frames >= limit => event_loop.exit(),
+            // Counting frames: keep drawing.
+            Some(_) => state.window.request_redraw(),
+            None => {}
+        }
+        Ok(())
+    }
+
     fn open(&mut self, event_loop: &ActiveEventLoop) -> Result<State<L>> {
         let (width, height) = self.args.size;
         let attributes = Window::default_attributes()
@@ -280,6 +300,30 @@ impl<L: Lesson> State<L> {
         if size.width == 0 || size.height == 0 {
             return Ok(false);
         }
+        let Some((frame, suboptimal)) = self.next_frame(size)? else {
+            return Ok(false);
+        };
+        let again = self.draw_frame(&frame)?;
+        self.window.pre_present_notify();
+        self.runner.gpu.queue.present(frame);
+        self.runner.gpu.check_errors()?;
+        if suboptimal {
+            self.resize(size);
+        }
+        if again {
+            // The panel changed something: draw again, for the panel to show it.
+            self.update_title();
+            self.window.request_redraw();
+        }
+        Ok(true)
+    }
+
+    /// The surface's next frame, and whether the surface is suboptimal (to be configured again once
+    /// the frame is shown); none when the surface has no frame to give this time.
+    fn next_frame(
+        &mut self,
+        size: PhysicalSize<u32>,
+    ) -> Result<Option<(wgpu::SurfaceTexture, bool)>> {
         let current = match self.injected.pop() {
             None => self.surface.get_current_texture(),
             Some(name) => inject(name, &self.surface),
@@ -288,20 +332,20 @@ impl<L: Lesson> State<L> {
         // is no frame but is recovered from at once (timeout, outdated, lost), ask for the frame
         // again, or the window stays blank (or stale) until the mouse moves. Not when occluded:
         // that would spin while the window is hidden.
-        let (frame, suboptimal) = match current {
-            wgpu::CurrentSurfaceTexture::Success(frame) => (frame, false),
+        match current {
+            wgpu::CurrentSurfaceTexture::Success(frame) => Ok(Some((frame, false))),
             // Still a frame: show it, then configure again for the next. (Dropping it showed
             // nothing while a surface stayed suboptimal, and `--frames` never ended.)
-            wgpu::CurrentSurfaceTexture::Suboptimal(frame) => (frame, true),
-            wgpu::CurrentSurfaceTexture::Occluded => return Ok(false),
+            wgpu::CurrentSurfaceTexture::Suboptimal(frame) => Ok(Some((frame, true))),
+            wgpu::CurrentSurfaceTexture::Occluded => Ok(None),
             wgpu::CurrentSurfaceTexture::Timeout => {
                 self.window.request_redraw();
-                return Ok(false);
+                Ok(None)
             }
             wgpu::CurrentSurfaceTexture::Outdated => {
                 self.resize(size);
                 self.window.request_redraw();
-                return Ok(false);
+                Ok(None)
             }
             wgpu::CurrentSurfaceTexture::Lost => {
                 self.surface = self
@@ -312,13 +356,18 @@ impl<L: Lesson> State<L> {
                     .context("the window's surface was lost and cannot be made again")?;
                 self.resize(size);
                 self.window.request_redraw();
-                return Ok(false);
+                Ok(None)
             }
             wgpu::CurrentSurfaceTexture::Validation => {
                 self.runner.gpu.check_errors()?;
-                return Err(anyhow!("the window's surface reported a validation error"));
+                Err(anyhow!("the window's surface reported a validation error"))
             }
-        };
+        }
+    }
+
+    /// Draws into the surface's `frame`: the lesson beside the workbench's panel, or alone. Returns
+    /// whether the panel changed something (to be drawn again).
+    fn draw_frame(&mut self, frame: &wgpu::SurfaceTexture) -> Result<bool> {
         let view = frame.texture.create_view(&wgpu::TextureViewDescriptor {
             label: Some("window frame view"),
             ..Default::default()
@@ -343,18 +392,7 @@ impl<L: Lesson> State<L> {
             let (runner, viewing) = (&mut self.runner, self.viewing);
             self.workbench.draw_alone(runner, viewing, &view, size)?;
         }
-        self.window.pre_present_notify();
-        self.runner.gpu.queue.present(frame);
-        self.runner.gpu.check_errors()?;
-        if suboptimal {
-            self.resize(size);
-        }
-        if again {
-            // The panel changed something: draw again, for the panel to show it.
-            self.update_title();
-            self.window.request_redraw();
-        }
-        Ok(true)
+        Ok(again)
     }
 
     /// Gives the panel the event; returns whether the panel takes it for itself (a click or a wheel
@@ -375,6 +413,72 @@ impl<L: Lesson> State<L> {
             }
             _ => false,
         }
+    }
+
+    /// Every event but a redraw: the keys, the camera on the mouse, a resize, closing. Returns
+    /// whether anything changed (the title and the frame to be drawn again).
+    fn on_event(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        event: WindowEvent,
+        over_panel: bool,
+    ) -> Result<bool> {
+        match event {
+            WindowEvent::CloseRequested => event_loop.exit(),
+            WindowEvent::Resized(size) => {
+                self.resize(size);
+                return Ok(true);
+            }
+            WindowEvent::ModifiersChanged(modifiers) => self.modifiers = modifiers.state(),
+            // Not the presses winit makes up for keys held as the window gains focus: a key
+            // pressed just as the window got focus came twice (`H` hid the panel and showed it
+            // again at once).
+            WindowEvent::KeyboardInput {
+                event,
+                is_synthetic: false,
+                ..
+            } if event.state == ElementState::Pressed => {
+                if event.logical_key == Key::Named(NamedKey::Escape) {
+                    event_loop.exit();
+                }
+                return self.key(&event);
+            }
+            WindowEvent::MouseInput { .. } | WindowEvent::MouseWheel { .. } if over_panel => {}
+            WindowEvent::MouseInput {
+                state: button_state,
+                button: MouseButton::Left,
+                ..
+            } => {
+                self.drag_from = (button_state == ElementState::Pressed).then_some(self.cursor);
+            }
+            // A right-click on the view picks the pixel whose story the panel tells.
+            WindowEvent::MouseInput {
+                state: ElementState::Pressed,
+                button: MouseButton::Right,
+                ..
+            } if self.workbench.visible => {
+                return Ok(self.workbench.pick((self.cursor.x, self.cursor.y)));
+            }
+            WindowEvent::CursorMoved { position, .. } => {
+                self.cursor = position;
+                if let Some(from) = self.drag_from {
+                    let (dx, dy) = (position.x - from.x, position.y - from.y);
+                    self.runner.camera.orbit(dx as f32, dy as f32);
+                    self.drag_from = Some(position);
+                    return Ok(true);
+                }
+            }
+            WindowEvent::MouseWheel { delta, .. } => {
+                let steps = match delta {
+                    MouseScrollDelta::LineDelta(_, y) => y,
+                    MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
+                };
+                self.runner.camera.zoom(steps);
+                return Ok(true);
+            }
+            _ => {}
+        }
+        Ok(false)
     }
 
     /// Number keys cycle the knobs; returns whether anything changed.
@@ -454,85 +558,20 @@ impl<L: Lesson> ApplicationHandler for App<'_, L> {
         let Some(state) = self.state.as_mut() else {
             return;
         };
-        let mut changed = false;
         // The panel sees every event first; a click or a wheel over it is not the camera's.
         let over_panel = state.panel_event(&event);
-        let result: Result<()> = (|| {
-            match event {
-                WindowEvent::CloseRequested => event_loop.exit(),
-                WindowEvent::Resized(size) => {
-                    state.resize(size);
-                    changed = true;
-                }
-                WindowEvent::RedrawRequested => {
-                    if state.redraw()? {
-                        self.frames += 1;
-                        // `RUST_LOG=workbook::frames=debug` lists the frames: a test checks that
-                        // an idle window draws none.
-                        log::debug!(target: "workbook::frames", "frame {} drawn", self.frames);
-                    }
-                    match self.args.frames {
-                        Some(limit) if self.frames >= limit => event_loop.exit(),
-                        // Counting frames: keep drawing.
-                        Some(_) => state.window.request_redraw(),
-                        None => {}
-                    }
-                }
-                WindowEvent::ModifiersChanged(modifiers) => state.modifiers = modifiers.state(),
-                // Not the presses winit makes up for keys held as the window gains focus: a key
-                // pressed just as the window got focus came twice (`H` hid the panel and showed it
-                // again at once).
-                WindowEvent::KeyboardInput {
-                    event,
-                    is_synthetic: false,
-                    ..
-                } if event.state == ElementState::Pressed => {
-                    if event.logical_key == Key::Named(NamedKey::Escape) {
-                        event_loop.exit();
-                    }
-                    changed = state.key(&event)?;
-                }
-                WindowEvent::MouseInput { .. } | WindowEvent::MouseWheel { .. } if over_panel => {}
-                WindowEvent::MouseInput {
-                    state: button_state,
-                    button: MouseButton::Left,
-                    ..
-                } => {
-                    state.drag_from =
-                        (button_state == ElementState::Pressed).then_some(state.cursor);
-                }
-                // A right-click on the view picks the pixel whose story the panel tells.
-                WindowEvent::MouseInput {
-                    state: ElementState::Pressed,
-                    button: MouseButton::Right,
-                    ..
-                } if state.workbench.visible => {
-                    changed = state.workbench.pick((state.cursor.x, state.cursor.y));
-                }
-                WindowEvent::CursorMoved { position, .. } => {
-                    state.cursor = position;
-                    if let Some(from) = state.drag_from {
-                        let (dx, dy) = (position.x - from.x, position.y - from.y);
-                        state.runner.camera.orbit(dx as f32, dy as f32);
-                        state.drag_from = Some(position);
-                        changed = true;
-                    }
-                }
-                WindowEvent::MouseWheel { delta, .. } => {
-                    let steps = match delta {
-                        MouseScrollDelta::LineDelta(_, y) => y,
-                        MouseScrollDelta::PixelDelta(p) => p.y as f32 / 40.0,
-                    };
-                    state.runner.camera.zoom(steps);
-                    changed = true;
-                }
-                _ => {}
+        let result = match event {
+            WindowEvent::RedrawRequested => self.redraw_requested(event_loop).map(|()| false),
+            event => state.on_event(event_loop, event, over_panel),
+        };
+        let changed = match result {
+            Ok(changed) => changed,
+            Err(error) => {
+                self.fail(event_loop, error);
+                return;
             }
-            Ok(())
-        })();
-        if let Err(error) = result {
-            self.fail(event_loop, error);
-        } else if changed {
+        };
+        if let (true, Some(state)) = (changed, self.state.as_ref()) {
             state.update_title();
             state.window.request_redraw();
         }
