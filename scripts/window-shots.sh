@@ -5,7 +5,7 @@
 # is captured with ImageMagick. Needs xvfb-run, xdotool and ImageMagick (`import`). For the lessons in
 # PICKS, a second picture has a pixel of the view right-clicked: the panel tells its story.
 #
-#   scripts/window-shots.sh [LESSON...]      (default: all eleven)
+#   scripts/window-shots.sh [LESSON...]      (default: every lesson, scripts/lessons.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [[ "${1:-}" != --inside ]]; then
@@ -15,8 +15,7 @@ fi
 shift
 lessons=("$@")
 if [[ ${#lessons[@]} -eq 0 ]]; then
-    lessons=(depth-test stencil-basics mark-mirror reflect-skull winding-fix transparent-mirror
-             drawing-order floor-mirror render-to-texture planar-shadow two-mirrors)
+    mapfile -t lessons < <(scripts/lessons.sh)
 fi
 # The pixel right-clicked in LESSON-pixel.jpg, in the window's pixels.
 declare -A PICKS=([mark-mirror]="470 250")

@@ -1,24 +1,13 @@
-//! Every lesson by its package name, in the book's order: the one place that maps a lesson's name
-//! to its type, for the tools that take a name (`cargo screenshots`, the benchmark, the tests) and
-//! for the web edition's module, which runs whichever lesson its page names.
+//! Every lesson by its package name, in the book's order: the one place that lists the lessons and
+//! maps a lesson's name to its type, for the tools that take a name (`cargo screenshots`, the
+//! benchmark, the tests) and for the web edition's module, which runs whichever lesson its page names.
+//!
+//! The list is this crate's `[dependencies]` (Cargo.toml): a lesson is added by its folder and one
+//! line there. build.rs reads those lines into one call of `lessons!` (below); each lesson's crate is
+//! re-exported here (`lessons::two_mirrors`), so that no other crate names a lesson's crate.
 
 use anyhow::{Result, bail};
 use workbook::Lesson;
-
-/// Every lesson by package name, in the book's order.
-pub const LESSONS: &[&str] = &[
-    "depth-test",
-    "stencil-basics",
-    "mark-mirror",
-    "reflect-skull",
-    "winding-fix",
-    "transparent-mirror",
-    "drawing-order",
-    "floor-mirror",
-    "render-to-texture",
-    "planar-shadow",
-    "two-mirrors",
-];
 
 /// Something to do with a lesson's type, given its package name: see [`for_lesson`].
 pub trait ForLesson {
@@ -26,20 +15,33 @@ pub trait ForLesson {
     fn run<L: Lesson>(self) -> Self::Output;
 }
 
-/// Runs `task` with the lesson called `lesson`.
-pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
-    Ok(match lesson {
-        "depth-test" => task.run::<depth_test::DepthTest>(),
-        "stencil-basics" => task.run::<stencil_basics::StencilBasics>(),
-        "mark-mirror" => task.run::<mark_mirror::MarkMirror>(),
-        "reflect-skull" => task.run::<reflect_skull::ReflectSkull>(),
-        "winding-fix" => task.run::<winding_fix::WindingFix>(),
-        "transparent-mirror" => task.run::<transparent_mirror::TransparentMirror>(),
-        "drawing-order" => task.run::<drawing_order::DrawingOrder>(),
-        "floor-mirror" => task.run::<floor_mirror::FloorMirror>(),
-        "render-to-texture" => task.run::<render_to_texture::RenderToTexture>(),
-        "planar-shadow" => task.run::<planar_shadow::PlanarShadow>(),
-        "two-mirrors" => task.run::<two_mirrors::TwoMirrors>(),
-        other => bail!("there is no lesson called `{other}`"),
-    })
+/// Makes [`LESSONS`], [`for_lesson`], the re-exports and, with the feature `exercises`, the
+/// exercise solutions' modules, from the lessons as build.rs writes them: each lesson's package
+/// name, crate, lesson type and its solutions (`exercise_K "path/to/exercise-N-K.rs"`).
+macro_rules! lessons {
+    ($($name:literal $krate:ident $lesson:ident [$($exercise:ident $file:tt)*],)*) => {
+        /// Every lesson by package name, in the book's order.
+        pub const LESSONS: &[&str] = &[$($name),*];
+
+        $(pub use ::$krate;)*
+
+        /// Runs `task` with the lesson called `lesson`.
+        pub fn for_lesson<T: ForLesson>(lesson: &str, task: T) -> Result<T::Output> {
+            Ok(match lesson {
+                $($name => task.run::<$krate::$lesson>(),)*
+                other => bail!("there is no lesson called `{other}`"),
+            })
+        }
+
+        /// Every lesson's exercise solutions, `exercises::two_mirrors::exercise_1` the one of
+        /// chapters/11-two-mirrors/examples/exercise-11-1.rs (their `main` goes unused).
+        #[cfg(feature = "exercises")]
+        pub mod exercises {
+            $(pub mod $krate {
+                $(#[path = $file] #[allow(dead_code)] pub mod $exercise;)*
+            })*
+        }
+    };
 }
+
+include!(concat!(env!("OUT_DIR"), "/lessons.rs"));

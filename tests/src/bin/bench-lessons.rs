@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
-use workbook_tests::bench::{self, CASES, Plan};
+use workbook_tests::bench::{self, Plan};
 use workbook_tests::launches;
 use workbook_tests::shots::LESSONS;
 
@@ -69,7 +69,7 @@ fn main() -> ExitCode {
         },
     };
     if let Some(name) = &args.lesson
-        && !CASES.iter().any(|c| c.lesson == name)
+        && !LESSONS.contains(&name.as_str())
     {
         eprintln!("bench-lessons: error: no lesson `{name}`");
         return ExitCode::FAILURE;
@@ -78,7 +78,7 @@ fn main() -> ExitCode {
     let started = std::time::Instant::now();
     let mut results = Vec::new();
     for size in plan.sizes.iter().filter(|_| wanted(Part::Frames)) {
-        for case in CASES
+        for case in bench::cases()
             .iter()
             .filter(|c| !plan.defaults_only || c.label().is_empty())
             .filter(|c| args.lesson.as_ref().is_none_or(|name| name == c.lesson))

@@ -61,6 +61,26 @@ fn step_times_are_positive_and_fit_in_the_frame() {
     }
 }
 
+/// The benchmark measures every lesson, its defaults once and in the book's order, and each variant
+/// it lists is of a lesson.
+#[test]
+fn the_benchmark_measures_every_lesson() {
+    let cases = bench::cases();
+    let defaults: Vec<&str> = cases
+        .iter()
+        .filter(|c| c.label().is_empty())
+        .map(|c| c.lesson)
+        .collect();
+    assert_eq!(defaults, LESSONS);
+    for variant in bench::VARIANTS {
+        assert!(
+            LESSONS.contains(&variant.lesson),
+            "a variant of `{}`, which is no lesson",
+            variant.lesson
+        );
+    }
+}
+
 /// The book's cost page shows what the benchmark wrote: each CSV there has the benchmark's columns
 /// and is linked from the page, and each adapter's main figures have their plots.
 #[test]

@@ -5,6 +5,7 @@
 
 use glam::{Vec3, Vec4, Vec4Swizzles};
 use image::imageops;
+use lessons::floor_mirror;
 use workbook::app::headless::{self, Capture, Request};
 use workbook::gpu::states::{self, Clip};
 use workbook::math::clip::oblique_projection;
@@ -15,7 +16,7 @@ use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, Stop, wgpu};
 use workbook_tests::flip::{self, Threshold};
 use workbook_tests::shots::{self, STRICT};
 
-use floor_mirror::{FloorMirror, floor_plane, reflected, sink_skull};
+use lessons::floor_mirror::{FloorMirror, floor_plane, reflected, sink_skull};
 
 const SIZE: (u32, u32) = (400, 225);
 

@@ -1,5 +1,6 @@
 //! Every value of every knob of every lesson renders without a wgpu error.
 
+use lessons::depth_test;
 use workbook_tests::shots::{self, LESSONS};
 
 /// Every value of every knob, one knob at a time. Of the 256 values of a byte knob (a stencil

@@ -14,6 +14,7 @@ mod floor_mirror;
 mod fuzz;
 mod heap;
 mod knobs;
+mod lessons;
 mod mark_mirror;
 mod panel;
 mod pixel;

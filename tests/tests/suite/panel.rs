@@ -5,6 +5,7 @@
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use lessons::reflect_skull;
 use workbook::app::headless::{Headless, Request};
 use workbook::app::workbench::headless::HeadlessWorkbench;
 use workbook::app::workbench::panel::{self, Action, Book, Cost, Model};
@@ -172,7 +173,7 @@ fn the_panel_says_a_software_gpu_draws_at_half_resolution_and_switches() {
 /// (and the panel says "CPU time only", as the test above shows).
 #[test]
 fn the_panels_step_times_are_positive_and_fit_in_the_frame() {
-    use reflect_skull::ReflectSkull;
+    use lessons::reflect_skull::ReflectSkull;
     use workbook::app::args::Args;
     use workbook::wgpu;
 
@@ -225,7 +226,7 @@ fn the_panels_step_times_are_positive_and_fit_in_the_frame() {
 /// knob changed, lays it out again.
 #[test]
 fn idle_frames_keep_the_panels_layout() {
-    use reflect_skull::ReflectSkull;
+    use lessons::reflect_skull::ReflectSkull;
     use workbook::app::args::Args;
 
     let args = Args::parse_for::<ReflectSkull>(["reflect-skull", "--size", "640x360"]).unwrap();
@@ -281,7 +282,7 @@ fn idle_frames_keep_the_panels_layout() {
 /// the view's size and the same settings, and follows a knob changed in the panel.
 #[test]
 fn a_picked_pixel_s_story_is_the_one_pixel_tells() {
-    use mark_mirror::MarkMirror;
+    use lessons::mark_mirror::MarkMirror;
     use workbook::app::args::Args;
     use workbook_tests::stories::skeleton;
 
@@ -328,7 +329,7 @@ fn a_picked_pixel_s_story_is_the_one_pixel_tells() {
 /// GPU's at full (the decision itself: `Resolution::half`'s unit test).
 #[test]
 fn auto_resolution_follows_the_adapter() {
-    use reflect_skull::ReflectSkull;
+    use lessons::reflect_skull::ReflectSkull;
     use workbook::app::args::Args;
 
     let args = Args::parse_for::<ReflectSkull>(["reflect-skull", "--size", "640x360"]).unwrap();
@@ -426,7 +427,7 @@ fn a_pixel_picked_at_half_resolution_is_the_half_size_render_s() {
 /// headless render at the view's size, of whichever buffer it shows; the panel is beside it.
 #[test]
 fn the_view_beside_the_panel_is_the_lessons_render() {
-    use reflect_skull::ReflectSkull;
+    use lessons::reflect_skull::ReflectSkull;
     use workbook::app::args::Args;
 
     for (show, shown) in [("color", Show::Color), ("stencil", Show::Stencil)] {

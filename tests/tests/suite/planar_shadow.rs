@@ -17,7 +17,7 @@ use workbook::{Lesson, Stop};
 use workbook_tests::geometry::{View, hit_box, hit_y0_rect, passes_near};
 use workbook_tests::shots;
 
-use planar_shadow::{PlanarShadow, key_light};
+use lessons::planar_shadow::{PlanarShadow, key_light};
 
 const SIZE: (u32, u32) = (320, 180);
 

@@ -12,7 +12,7 @@ use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, wgpu};
 use workbook_tests::flip::{self, Threshold};
 use workbook_tests::shots::{self, STRICT};
 
-use render_to_texture::{RenderToTexture, reflected};
+use lessons::render_to_texture::{RenderToTexture, reflected};
 
 const SIZE: (u32, u32) = (400, 225);
 

@@ -1,5 +1,6 @@
 //! Every screenshot of the book, rendered again and compared with the committed file by FLIP.
 
+use lessons::mark_mirror;
 use workbook_tests::flip::{self, Threshold};
 use workbook_tests::shots::{self, PAIRS, SHOTS, STRICT};
 

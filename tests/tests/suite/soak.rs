@@ -36,6 +36,7 @@
 
 use std::process::Command;
 
+use lessons::two_mirrors;
 use workbook::app::headless::{Headless, Request};
 use workbook::wgpu;
 

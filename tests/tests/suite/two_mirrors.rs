@@ -5,6 +5,7 @@
 
 use glam::Vec4;
 use image::imageops;
+use lessons::two_mirrors;
 use workbook::app::headless::{self, Capture, Request};
 use workbook::gpu::states::{self, Clip};
 use workbook::room::camera::Camera;

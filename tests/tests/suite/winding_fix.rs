@@ -4,6 +4,7 @@
 //! handedness restored by `look_at`, hence the horizontal flip). The broken variant must not.
 
 use image::imageops;
+use lessons::winding_fix;
 use workbook::app::headless::{self, Request};
 use workbook::room::camera::Camera;
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene, gpu::states, wgpu};

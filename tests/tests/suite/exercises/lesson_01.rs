@@ -9,12 +9,8 @@ use workbook::room::camera::BOOK_POSE;
 use workbook::room::scene::{CLEAR_SRGB, FLOOR_DEPTH, SKULL_CENTRE, WALL_HALF_WIDTH, WALL_HEIGHT};
 use workbook_tests::geometry::{View, hit_y0_rect, hit_z0_rect};
 
-#[path = "../../../../chapters/01-depth-test/examples/exercise-1-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/01-depth-test/examples/exercise-1-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::depth_test;
+use lessons::exercises::depth_test::{exercise_1, exercise_2};
 
 const VIEW: View = View::new(BOOK_POSE, 320, 180);
 

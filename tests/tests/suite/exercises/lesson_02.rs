@@ -8,12 +8,8 @@ use workbook::app::headless::{self, Capture, Request};
 use workbook::glam::Vec2;
 use workbook::room::scene::CLEAR_SRGB;
 
-#[path = "../../../../chapters/02-stencil-basics/examples/exercise-2-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/02-stencil-basics/examples/exercise-2-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::stencil_basics::{exercise_1, exercise_2};
+use lessons::stencil_basics;
 
 const W: u32 = 320;
 const H: u32 = 180;

@@ -11,12 +11,8 @@ use workbook::room::scene::{
 };
 use workbook_tests::geometry::{View, hit_box, hit_z0_rect, passes_near};
 
-#[path = "../../../../chapters/03-mark-mirror/examples/exercise-3-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/03-mark-mirror/examples/exercise-3-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::mark_mirror::{exercise_1, exercise_2};
+use lessons::mark_mirror;
 
 const VIEW: View = View::new(BOOK_POSE, 320, 180);
 

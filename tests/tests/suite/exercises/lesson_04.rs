@@ -12,12 +12,8 @@ use workbook::room::scene::{
 use workbook::{Lesson, Stop};
 use workbook_tests::geometry::{View, passes_near};
 
-#[path = "../../../../chapters/04-reflect-skull/examples/exercise-4-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/04-reflect-skull/examples/exercise-4-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::reflect_skull::{exercise_1, exercise_2};
+use lessons::reflect_skull;
 
 const VIEW: View = View::new(BOOK_POSE, 320, 180);
 

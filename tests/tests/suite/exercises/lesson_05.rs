@@ -12,12 +12,8 @@ use workbook::room::scene::{
 use workbook::{Lesson, Stop};
 use workbook_tests::geometry::{View, hit_y0_rect, passes_near};
 
-#[path = "../../../../chapters/05-winding-fix/examples/exercise-5-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/05-winding-fix/examples/exercise-5-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::winding_fix::{exercise_1, exercise_2};
+use lessons::winding_fix;
 
 const VIEW: View = View::new(BOOK_POSE, 320, 180);
 

@@ -7,12 +7,9 @@ use workbook::app::headless::{self, Capture, Request};
 use workbook::gpu::{linear_to_srgb, srgb_to_linear};
 use workbook::{Lesson, Stop};
 
-#[path = "../../../../chapters/06-transparent-mirror/examples/exercise-6-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/06-transparent-mirror/examples/exercise-6-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::transparent_mirror::{exercise_1, exercise_2};
+use lessons::transparent_mirror;
+use lessons::winding_fix;
 
 const W: u32 = 320;
 const H: u32 = 180;

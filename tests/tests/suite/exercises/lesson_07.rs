@@ -2,12 +2,7 @@
 //! mirror behind the water (no fringe), and the reflection then covers the water there. 2: opaque
 //! first, transparent last leaves the crate's pixels unmarked and gives the default order's picture.
 
-#[path = "../../../../chapters/07-drawing-order/examples/exercise-7-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/07-drawing-order/examples/exercise-7-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::drawing_order::{exercise_1, exercise_2};
 
 use glam::Vec3;
 use workbook::Lesson;

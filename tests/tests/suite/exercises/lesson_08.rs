@@ -2,12 +2,7 @@
 //! stone is then blended over the crate. 2: the wire-fence crate's image shows in the stone where
 //! the ray, continued below the floor, meets the fence's mirror image, and nowhere else changes.
 
-#[path = "../../../../chapters/08-floor-mirror/examples/exercise-8-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/08-floor-mirror/examples/exercise-8-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::floor_mirror::{exercise_1, exercise_2};
 
 use glam::Vec3;
 use workbook::Lesson;
@@ -19,7 +14,7 @@ use workbook::room::scene::{
 use workbook_tests::geometry::{View, hit_box, hit_y0_rect, passes_near};
 use workbook_tests::{changed_only_inside_mark, shots};
 
-use floor_mirror::FloorMirror;
+use lessons::floor_mirror::FloorMirror;
 
 /// Lesson 8's camera, at a size that keeps the tests quick.
 const VIEW: View = View::new(FloorMirror::CAMERA, 400, 225);

@@ -4,12 +4,7 @@
 //! where the crate's image is. 2: the wall mirror made a texture mirror shows what the lesson's
 //! `plane=wall` shows, except where it sees the stone.
 
-#[path = "../../../../chapters/09-render-to-texture/examples/exercise-9-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/09-render-to-texture/examples/exercise-9-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::render_to_texture::{exercise_1, exercise_2};
 
 use glam::Vec3;
 use image::RgbaImage;
@@ -23,7 +18,7 @@ use workbook_tests::flip;
 use workbook_tests::geometry::{View, hit_box, hit_y0_rect, hit_z0_rect, passes_near};
 use workbook_tests::shots::{self, STRICT};
 
-use render_to_texture::RenderToTexture;
+use lessons::render_to_texture::RenderToTexture;
 
 /// Lesson 9's camera, at a size that keeps the tests quick.
 const VIEW: View = View::new(RenderToTexture::CAMERA, 400, 225);

@@ -2,12 +2,7 @@
 //! half, once. 2: the crate's own shadow halves the floor where the crate blocks the key light (a ray
 //! cast from the floor towards the light), once, though the flattened cube lies there in two layers.
 
-#[path = "../../../../chapters/10-planar-shadow/examples/exercise-10-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/10-planar-shadow/examples/exercise-10-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::planar_shadow::{exercise_1, exercise_2};
 
 use glam::Vec3;
 use workbook::Lesson;
@@ -20,7 +15,7 @@ use workbook::room::scene::{
 use workbook_tests::geometry::{View, hit_box, hit_y0_rect, passes_near};
 use workbook_tests::shots;
 
-use planar_shadow::PlanarShadow;
+use lessons::planar_shadow::PlanarShadow;
 
 /// Lesson 10's camera, at a size that keeps the tests quick.
 const VIEW: View = View::new(PlanarShadow::CAMERA, 400, 225);

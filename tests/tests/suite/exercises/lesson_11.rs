@@ -2,12 +2,7 @@
 //! and the reset and the level drawn after them paint the corridor over the crate. 2: mirrors that
 //! reflect 80% leave each pixel 0.8^k as bright as the lesson's, k its level in the lesson's stencil.
 
-#[path = "../../../../chapters/11-two-mirrors/examples/exercise-11-1.rs"]
-#[allow(dead_code)]
-mod exercise_1;
-#[path = "../../../../chapters/11-two-mirrors/examples/exercise-11-2.rs"]
-#[allow(dead_code)]
-mod exercise_2;
+use lessons::exercises::two_mirrors::{exercise_1, exercise_2};
 
 use glam::Vec3;
 use workbook::Lesson;
@@ -17,7 +12,7 @@ use workbook::room::scene::{CRATE_CENTRE, CRATE_SIZE, MIRROR_MAX, MIRROR_MIN};
 use workbook_tests::geometry::{View, hit_box, hit_z0_rect};
 use workbook_tests::shots;
 
-use two_mirrors::TwoMirrors;
+use lessons::two_mirrors::TwoMirrors;
 
 /// Lesson 11's camera, at a size that keeps the tests quick.
 const VIEW: View = View::new(TwoMirrors::CAMERA, 400, 225);

@@ -1,7 +1,7 @@
 //! The exercises' solutions (`chapters/NN-name/examples/exercise-N-K.rs`), each tested by what its
 //! exercise asks for, and each with a counterpart that shows the lesson alone does not already do it:
-//! no exercise can be a no-op. The solutions are compiled into this binary through `#[path]`
-//! modules, so wgpu is linked once.
+//! no exercise can be a no-op. The solutions are compiled into the lessons crate as modules
+//! (`lessons::exercises::two_mirrors::exercise_1`, its feature `exercises`), so wgpu is linked once.
 
 mod lesson_01;
 mod lesson_02;
