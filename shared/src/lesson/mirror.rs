@@ -144,3 +144,10 @@ impl StencilMirror {
         });
     }
 }
+
+impl MirrorWorld {
+    /// Writes this frame's camera (oblique or not), the reflected lights and the clip plane.
+    pub fn update(&self, frame: &Frame<'_>, oblique: bool) {
+        self.write(&frame.gpu.queue, &frame.view, oblique);
+    }
+}

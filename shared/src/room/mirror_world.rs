@@ -6,7 +6,6 @@ use glam::Mat4;
 
 use crate::Gpu;
 use crate::gpu::pass::Pass;
-use crate::lesson::Frame;
 use crate::math::clip::oblique_projection;
 use crate::math::reflect::{Plane, reflection};
 use crate::room::camera::View;
@@ -87,12 +86,12 @@ impl MirrorWorld {
     }
     // ANCHOR_END: view
 
-    /// Writes this frame's camera (oblique or not), the reflected lights and the clip plane.
-    pub fn update(&self, frame: &Frame<'_>, oblique: bool) {
-        let view = self.view(&frame.view, oblique);
+    /// Writes the mirrored camera of `view` (oblique or not), the reflected lights and the clip
+    /// plane (a lesson calls `update` with its frame: see [`crate::lesson::mirror`]).
+    pub fn write(&self, queue: &wgpu::Queue, view: &View, oblique: bool) {
+        let view = self.view(view, oblique);
         let clip_plane = self.kept_side().as_vec4();
-        self.frame
-            .write(&frame.gpu.queue, &view, &self.lights(), clip_plane);
+        self.frame.write(queue, &view, &self.lights(), clip_plane);
     }
 
     /// Binds the mirror world's camera and lights (group 0).

@@ -22,6 +22,7 @@ mod planar_shadow;
 mod reflect_skull;
 mod render_to_texture;
 mod screenshots;
+mod shape;
 mod soak;
 mod stencil_basics;
 mod steps;
