@@ -45,7 +45,7 @@ pub fn draws<L: Lesson>(runner: &Runner<L>, color: &wgpu::Texture) -> Vec<Draw> 
     probe.start(Probing::Until(0));
     let color_view = color.create_view(&Default::default());
     let request = FrameRequest::to(&color_view).probed(&mut probe);
-    drop(runner.record(request.each_step(&mut |_, _, _| {})));
+    drop(runner.record(request));
     probe.draws
 }
 
@@ -178,10 +178,7 @@ impl<'r, L: Lesson> Teller<'r, L> {
     fn record(&mut self, probing: Probing) -> Result<wgpu::CommandEncoder> {
         self.probe.start(probing);
         let request = FrameRequest::to(&self.color_view).probed(&mut self.probe);
-        Ok(self
-            .runner
-            .record(request.each_step(&mut |_, _, _| {}))?
-            .encoder)
+        Ok(self.runner.record(request)?.encoder)
     }
 
     /// The first round: the frame watched, the pixel read after every step, and then covered.

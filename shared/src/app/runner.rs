@@ -106,10 +106,11 @@ impl<L: Lesson> Runner<L> {
             probe,
             mut after_step,
         } = request;
-        // Looking between the steps needs a pass each; otherwise as the runner records.
-        let passes = match after_step {
-            Some(_) => Passes::PerStep,
-            None => self.passes,
+        // Looking between the steps, or at one pixel through them, needs a pass each; otherwise as
+        // the runner records.
+        let passes = match (&after_step, &probe) {
+            (None, None) => self.passes,
+            _ => Passes::PerStep,
         };
         let (mut shown, mut failure) = (false, None);
         // A frame that stops after a step drawn into a lesson's own target shows that target.
