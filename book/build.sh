@@ -52,6 +52,12 @@ for po in po/*.po; do
     echo "book: $po lacks translations of the English as it is now ($(sed -n 's/.*found \([0-9]*\) fatal error.*/\1/p' "$work/msgcmp.log") messages: untranslated, fuzzy or new; the first are above); run book/po/update.sh and translate them (book/po/README.md)" >&2
     exit 1
   fi
+  # One voice: the glossary's Chinese for each of its terms, and Chinese punctuation in alt texts and
+  # captions (po/check-terms.py; the glossary has a Chinese column only).
+  if [ "$language" = zh-CN ] && ! python3 po/check-terms.py "$po"; then
+    echo "book: $po does not follow the glossary (src/glossary.md) or po/README.md (the problems are above)" >&2
+    exit 1
+  fi
   # The book's title is no message of any page: it is the .po header's X-Book-Title.
   title=$(sed -n 's/^"X-Book-Title: \(.*\)\\n"$/\1/p' "$po")
   settings=(MDBOOK_BOOK__LANGUAGE="$language")

@@ -14,8 +14,8 @@ pub struct Solution {
 // ANCHOR: solution
 /// OPAQUE with the reflection's front face: for the room, which no reflection has turned, this
 /// culls the faces that look at the camera.
-pub const OPAQUE_CLOCKWISE: Recipe = Recipe {
-    name: "OPAQUE_CLOCKWISE",
+pub const OPAQUE_FRONT_CLOCKWISE: Recipe = Recipe {
+    name: "OPAQUE_FRONT_CLOCKWISE",
     front_face: wgpu::FrontFace::Cw,
     ..states::OPAQUE
 };
@@ -29,7 +29,7 @@ impl Lesson for Solution {
     fn new(gpu: &Gpu, scene: &Scene, knobs: &Knobs) -> anyhow::Result<Self> {
         let pipeline = |recipe| scene.pipeline(&gpu.device, recipe);
         Ok(Self {
-            draw_room: pipeline(&OPAQUE_CLOCKWISE),
+            draw_room: pipeline(&OPAQUE_FRONT_CLOCKWISE),
             mark_mirror: pipeline(&states::MARK_MIRROR),
             draw_reflection: pipeline(&reflection_recipe(knobs.get("winding-fix"))),
         })

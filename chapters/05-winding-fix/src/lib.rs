@@ -1,8 +1,8 @@
 //! Lesson 5: the winding fix.
 //!
 //! A reflection has determinant −1: it turns counter-clockwise triangles clockwise on screen. So the
-//! reflected pass tells the rasterizer that clockwise is the front (CULL_CLOCKWISE), and the mirror
-//! shows the skull's outside again.
+//! reflected pass tells the rasterizer that clockwise is the front (FRONT_CLOCKWISE), and the
+//! mirror shows the skull's outside again.
 
 use workbook::lesson::mirror::MarkedRoom;
 use workbook::wgpu;
@@ -27,7 +27,7 @@ pub const KNOBS: &[Knob] = &[Knob {
 pub fn reflection_recipe(winding_fix: &str) -> Recipe {
     match winding_fix {
         // Fix 1: clockwise is the front now; cull the back faces as always.
-        "front-face-cw" => states::CULL_CLOCKWISE,
+        "front-face-cw" => states::FRONT_CLOCKWISE,
         // Fix 2, the same pixels: keep counter-clockwise as the front, cull the front faces instead.
         "cull-front" => Recipe {
             name: "DRAW_REFLECTION_CULL_FRONT",
@@ -65,7 +65,7 @@ impl Lesson for WindingFix {
         // Clear, draw the room but the mirror, mark the mirror with 1 (lesson 3).
         self.marked_room.steps(frame);
 
-        // Draw the reflected skull where the stencil is 1 (lesson 4), now with CULL_CLOCKWISE: the
+        // Draw the reflected skull where the stencil is 1 (lesson 4), now with FRONT_CLOCKWISE: the
         // triangles the reflection turned clockwise are the ones facing the camera.
         frame.step("draw the reflected skull", |pass| {
             pass.set_pipeline(&self.draw_reflection);

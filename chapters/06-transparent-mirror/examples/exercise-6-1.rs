@@ -23,7 +23,7 @@ impl Lesson for Solution {
             .set_alpha(&gpu.queue, knobs.get("mirror-alpha").parse()?);
         Ok(Self {
             marked_room: MarkedRoom::new(gpu, scene),
-            draw_reflection: scene.pipeline(&gpu.device, &states::CULL_CLOCKWISE),
+            draw_reflection: scene.pipeline(&gpu.device, &states::FRONT_CLOCKWISE),
             draw_mirror: scene.pipeline(&gpu.device, &draw_mirror(knobs)),
         })
     }

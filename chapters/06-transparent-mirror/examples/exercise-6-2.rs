@@ -56,7 +56,7 @@ impl Lesson for Solution {
     fn new(gpu: &Gpu, scene: &Scene, _: &Knobs) -> anyhow::Result<Self> {
         Ok(Self {
             marked_room: MarkedRoom::new(gpu, scene),
-            draw_reflection: scene.pipeline(&gpu.device, &states::CULL_CLOCKWISE),
+            draw_reflection: scene.pipeline(&gpu.device, &states::FRONT_CLOCKWISE),
             draw_tinted: scene.pipeline(&gpu.device, &TINTED_GLASS),
         })
     }

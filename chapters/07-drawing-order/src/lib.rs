@@ -38,7 +38,7 @@ impl Lesson for DrawingOrder {
             draw_opaque: pipeline(&states::OPAQUE),
             draw_transparent: pipeline(&states::TRANSPARENT_NO_CULL),
             mark_mirror: pipeline(&states::MARK_MIRROR),
-            draw_reflection: pipeline(&states::CULL_CLOCKWISE),
+            draw_reflection: pipeline(&states::FRONT_CLOCKWISE),
             draw_reflected_transparent: pipeline(&states::REFLECTED_TRANSPARENT),
             draw_mirror: pipeline(&states::TRANSPARENT),
             mirror_first: knobs.get("order") == "mirror-first",

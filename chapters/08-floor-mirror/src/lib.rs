@@ -71,13 +71,13 @@ pub fn floor_plane() -> Plane {
 // ANCHOR_END: plane
 
 // ANCHOR: recipes
-/// The reflection's recipe: CULL_CLOCKWISE as on the wall (a reflection flips the winding), SPE's,
+/// The reflection's recipe: FRONT_CLOCKWISE as on the wall (a reflection flips the winding), SPE's,
 /// or the blog's; each clipped at the plane as the `clip` knob says.
 pub fn draw_reflection(knobs: &Knobs) -> Recipe {
     let recipe = match knobs.get("recipe") {
         "spe" => states::SPE_REFLECTION,
         "always" => states::ALWAYS_REFLECTION,
-        _ => states::CULL_CLOCKWISE,
+        _ => states::FRONT_CLOCKWISE,
     };
     let clip = match knobs.get("clip") {
         "clip-distances" => Clip::Distances,

@@ -212,7 +212,7 @@ pub fn reflected_view_recipe(rastertek: bool, clip: bool) -> Recipe {
     let recipe = if rastertek {
         states::OPAQUE
     } else {
-        states::CULL_CLOCKWISE
+        states::FRONT_CLOCKWISE
     };
     Recipe {
         name: "DRAW_REFLECTED_VIEW",

@@ -216,7 +216,7 @@ impl Lesson for PlanarShadow {
             room_frame: scene.frame_binding(device, "lit room"),
             draw_room: pipeline(&states::OPAQUE),
             mark_mirror: pipeline(&states::MARK_MIRROR),
-            draw_reflection: pipeline(&states::CULL_CLOCKWISE),
+            draw_reflection: pipeline(&states::FRONT_CLOCKWISE),
             draw_reflected_shadow: pipeline(&draw_reflected_shadow(knobs)),
             draw_glass: pipeline(&draw_glass(knobs)),
             draw_shadow: pipeline(&draw_shadow(knobs)),

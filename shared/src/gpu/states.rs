@@ -144,16 +144,18 @@ const KEEP_IF_EQUAL: StencilFaceState = StencilFaceState {
 };
 // ANCHOR_END: draw_reflection
 
-// ANCHOR: cull_clockwise
+// ANCHOR: front_clockwise
 /// DRAW_REFLECTION for mirror images: a reflection (determinant −1) turns counter-clockwise
 /// triangles clockwise on screen, so the triangles that face the camera are now the clockwise ones.
-/// (Luna: `DrawReflectionDSS` with `CullClockwiseRS`, which tells D3D counter-clockwise is front.)
-pub const CULL_CLOCKWISE: Recipe = Recipe {
-    name: "CULL_CLOCKWISE",
+/// Clockwise is the front, and the back faces, now the counter-clockwise ones, are culled.
+/// (Luna: `DrawReflectionDSS` with `CullClockwiseRS`, which tells D3D counter-clockwise is front:
+/// D3D's default front is clockwise, so there the same flip culls the clockwise triangles.)
+pub const FRONT_CLOCKWISE: Recipe = Recipe {
+    name: "FRONT_CLOCKWISE",
     front_face: FrontFace::Cw,
     ..DRAW_REFLECTION
 };
-// ANCHOR_END: cull_clockwise
+// ANCHOR_END: front_clockwise
 
 // ANCHOR: transparent
 /// See-through surfaces: the usual depth test, and the colour mixed with what is already there,
@@ -290,7 +292,7 @@ pub const SPE_REFLECTION: Recipe = Recipe {
         },
         alpha: BlendComponent::OVER,
     }),
-    ..CULL_CLOCKWISE
+    ..FRONT_CLOCKWISE
 };
 // ANCHOR_END: spe_reflection
 
@@ -301,7 +303,7 @@ pub const ALWAYS_REFLECTION: Recipe = Recipe {
     name: "ALWAYS_REFLECTION",
     depth_write: false,
     depth_compare: CompareFunction::Always,
-    ..CULL_CLOCKWISE
+    ..FRONT_CLOCKWISE
 };
 // ANCHOR_END: always_reflection
 

@@ -109,7 +109,7 @@ impl StencilMirror {
             reset_depth: something_behind.then(|| ResetDepth::new(gpu, scene)),
             reflect: pipeline(&Recipe {
                 clip,
-                ..states::CULL_CLOCKWISE
+                ..states::FRONT_CLOCKWISE
             }),
             surface: pipeline(&states::BLEND_OVER_MARK),
             world: MirrorWorld::new(gpu, scene, plane, objects),

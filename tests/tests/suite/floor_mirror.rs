@@ -192,7 +192,7 @@ impl Lesson for ReflectedSkull {
         let recipe = Recipe {
             stencil: states::NO_STENCIL,
             clip: Clip::None,
-            ..states::CULL_CLOCKWISE
+            ..states::FRONT_CLOCKWISE
         };
         let world = MirrorWorld::new(gpu, scene, floor_plane(), &[&scene.skull]);
         Ok(Self(scene.pipeline(&gpu.device, &recipe), world))

@@ -121,7 +121,7 @@ impl Lesson for LevelOne {
         let recipe = Recipe {
             stencil: states::NO_STENCIL,
             clip: Clip::Discard,
-            ..states::CULL_CLOCKWISE
+            ..states::FRONT_CLOCKWISE
         };
         let objects = [&scene.floor, &scene.wall, &scene.crate_box, &scene.skull];
         let placing = (
