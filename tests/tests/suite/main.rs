@@ -19,6 +19,7 @@ mod mark_mirror;
 mod panel;
 mod pixel;
 mod planar_shadow;
+mod readme;
 mod reflect_skull;
 mod render_to_texture;
 mod screenshots;
