@@ -11,6 +11,10 @@
 //
 // `?backend=webgl2` (or `webgpu`) in the page's address picks the backend. The tests read the
 // canvas through `window.workbookLive` (see tests/src/web.rs).
+//
+// The page's own words are in the book's language (`WORDS`, chosen by the page's `lang`); the
+// program's words (knob names and values, step names, buffers, the command line, a pixel's story,
+// the program's errors) stay as the program prints them, as the book quotes them.
 (function () {
   "use strict";
 
@@ -21,6 +25,72 @@
   const live = (window.workbookLive = window.workbookLive || {});
   let module = null;
 
+  // The page's own words, by language; each language has every key (`cargo web-test` checks).
+  const WORDS = {
+    en: {
+      run: (lesson) => "▶ Run " + lesson + " live in this page (WebGPU, or WebGL2)",
+      starting: (lesson) => "starting " + lesson + "…",
+      cannot: (why) =>
+        "This browser cannot run the lesson here (" + why + "): the figures below show its pictures.",
+      running: (backend, adapter, seconds) =>
+        backend + " on " + adapter + " · first frame " + seconds + " s after Run",
+      anAdapter: "this browser's adapter",
+      error: (why) => "error: " + why,
+      pickAPixel: "Click a pixel of the picture to read its story through the frame.",
+      told: (x, y) =>
+        "Pixel " + x + "," + y + " (click another, or drag to orbit). The same on your machine: add --pixel " +
+        x + "," + y + " to the command line above.",
+      noStory: (x, y, why) => "No story for pixel " + x + "," + y + ": " + why,
+      byDefault: " (default)",
+      step: "step ",
+      stepTitle: "stop the frame after a step, as --step",
+      wholeFrame: "the whole frame",
+      after: (number, name) => "after " + number + ". " + name,
+      buffer: "buffer ",
+      bufferTitle: "the buffer shown, as --show",
+      lessonsView: "the lesson's view",
+      lessonsViewTitle: "put the camera back where the lesson starts",
+      copy: "copy",
+      copied: "copied",
+      selectToCopy: "select the line to copy it",
+      same: "The same on your machine: ",
+    },
+    "zh-CN": {
+      run: (lesson) => "▶ 在本页中运行 " + lesson + "（WebGPU，或 WebGL2）",
+      starting: (lesson) => "正在启动 " + lesson + "…",
+      cannot: (why) => "此浏览器无法在这里运行本课（" + why + "）：下面的插图就是它的画面。",
+      running: (backend, adapter, seconds) =>
+        backend + "，运行在 " + adapter + " 上 · 点击运行后 " + seconds + " 秒画出第一帧",
+      anAdapter: "此浏览器的适配器",
+      error: (why) => "错误：" + why,
+      pickAPixel: "点击画面上的一个像素，读它在这一帧中的故事。",
+      told: (x, y) =>
+        "像素 " + x + "," + y + "（可以再点一个，或拖动画面环绕旋转）。在你的机器上：在上面的命令行末尾加上 --pixel " +
+        x + "," + y + "。",
+      noStory: (x, y, why) => "像素 " + x + "," + y + " 没有故事：" + why,
+      byDefault: "（默认）",
+      step: "步骤 ",
+      stepTitle: "让帧停在某一步之后，相当于 --step",
+      wholeFrame: "整个帧",
+      after: (number, name) => "第 " + number + " 步之后：" + name,
+      buffer: "缓冲区 ",
+      bufferTitle: "显示的缓冲区，相当于 --show",
+      lessonsView: "回到本课的视角",
+      lessonsViewTitle: "把摄像机放回本课开始时的位置",
+      copy: "复制",
+      copied: "已复制",
+      selectToCopy: "请选中这一行来复制",
+      same: "在你的机器上运行：",
+    },
+  };
+  const words = WORDS[document.documentElement.lang] || WORDS.en;
+  // For the tests: every language's words missing from it, by language (none, or a word shows in
+  // English on that language's pages).
+  live.untranslated = Object.fromEntries(
+    Object.keys(WORDS).map((lang) => [lang, Object.keys(WORDS.en).filter((key) => !(key in WORDS[lang]))]),
+  );
+
+
   function element(tag, attributes, children) {
     const node = document.createElement(tag);
     for (const [name, value] of Object.entries(attributes || {})) {
@@ -29,6 +99,12 @@
     }
     for (const child of children || []) node.append(child);
     return node;
+  }
+
+  // An error of the lesson's, said in the status line (marked for the tests: `data-failed`).
+  function fail(status, error) {
+    status.textContent = words.error(error.message || error);
+    status.dataset.failed = "";
   }
 
   function loadModule() {
@@ -73,7 +149,7 @@
   async function run(container, bar) {
     const lesson = container.dataset.lesson;
     const started = performance.now();
-    const status = element("p", { class: "live-status", text: "starting " + lesson + "…" });
+    const status = element("p", { class: "live-status", text: words.starting(lesson) });
     bar.replaceWith(status);
     const canvas = element("canvas", { width: WIDTH, height: HEIGHT, class: "live-canvas" });
     canvas.setAttribute("tabindex", "0");
@@ -88,17 +164,15 @@
       page.draw();
     } catch (error) {
       view.remove();
-      status.textContent =
-        "This browser cannot run the lesson here (" + String(error.message || error) +
-        "): the figures below show its pictures.";
+      status.textContent = words.cannot(String(error.message || error));
+      status.dataset.failed = "";
       live[lesson] = { error: String(error.message || error) };
       return;
     }
     const firstFrame = (performance.now() - started) / 1000;
     const info = JSON.parse(page.describe());
-    status.textContent =
-      info.backend + " on " + ((await adapterName(info)) || "this browser's adapter") +
-      " · first frame " + firstFrame.toFixed(2) + " s after Run";
+    const adapter = (await adapterName(info)) || words.anAdapter;
+    status.textContent = words.running(info.backend, adapter, firstFrame.toFixed(2));
     // `telling`: the promise of a pixel's story being read; the lesson is busy until it is.
     const state = { page, dirty: false, firstFrame, controls: null, telling: null, pixel: null };
     const redraw = () => {
@@ -110,7 +184,7 @@
           try {
             page.draw();
           } catch (error) {
-            status.textContent = "error: " + (error.message || error);
+            fail(status, error);
           }
         });
       }
@@ -118,7 +192,7 @@
     state.redraw = redraw;
     const controls = element("div", { class: "live-controls" });
     const story = element("div", { class: "live-story" }, [
-      element("p", { text: "Click a pixel of the picture to read its story through the frame." }),
+      element("p", { text: words.pickAPixel }),
     ]);
     container.append(controls, story);
     state.story = story;
@@ -219,16 +293,14 @@
       (text) => {
         const pre = element("pre", { class: "live-story-text", text });
         story.replaceChildren(
-          element("p", {
-            text: "Pixel " + x + "," + y + " (click another, or drag to orbit). The same on your machine: add --pixel " + x + "," + y + " to the command line above.",
-          }),
+          element("p", { text: words.told(x, y) }),
           pre,
         );
         return text;
       },
       (error) => {
         story.replaceChildren(
-          element("p", { text: "No story for pixel " + x + "," + y + ": " + (error.message || error) }),
+          element("p", { "data-failed": "", text: words.noStory(x, y, error.message || error) }),
         );
         return "error: " + (error.message || error);
       },
@@ -252,7 +324,7 @@
         try {
           change();
         } catch (error) {
-          status.textContent = "error: " + (error.message || error);
+          fail(status, error);
         }
         redraw();
         refresh();
@@ -262,7 +334,7 @@
       const select = element("select", { "data-knob": knob.name, title: knob.meaning });
       for (const value of knob.values) {
         const why = knob.unavailable[value];
-        const label = value + (value === knob.default ? " (default)" : "");
+        const label = value + (value === knob.default ? words.byDefault : "");
         const option = element("option", { value, text: label });
         if (why) {
           option.disabled = true;
@@ -275,15 +347,15 @@
       select.addEventListener("change", () => apply(() => page.set_knob(knob.name, select.value)));
       rows.push(element("label", { title: knob.meaning }, [knob.name + " ", select]));
     }
-    const step = element("select", { "data-control": "step", title: "stop the frame after a step, as --step" });
-    step.append(element("option", { value: "0", text: "the whole frame" }));
+    const step = element("select", { "data-control": "step", title: words.stepTitle });
+    step.append(element("option", { value: "0", text: words.wholeFrame }));
     info.steps.forEach((name, index) => {
-      step.append(element("option", { value: String(index + 1), text: "after " + (index + 1) + ". " + name }));
+      step.append(element("option", { value: String(index + 1), text: words.after(index + 1, name) }));
     });
     step.value = String(info.step);
     step.addEventListener("change", () => apply(() => page.set_step(Number(step.value))));
-    rows.push(element("label", {}, ["step ", step]));
-    const show = element("select", { "data-control": "show", title: "the buffer shown, as --show" });
+    rows.push(element("label", {}, [words.step, step]));
+    const show = element("select", { "data-control": "show", title: words.bufferTitle });
     for (const buffer of info.shows) {
       const option = element("option", { value: buffer.name, text: buffer.name });
       if (buffer.unavailable) {
@@ -295,23 +367,23 @@
     }
     show.value = info.show;
     show.addEventListener("change", () => apply(() => page.set_show(show.value)));
-    rows.push(element("label", {}, ["buffer ", show]));
+    rows.push(element("label", {}, [words.buffer, show]));
 
-    const reset = element("button", { type: "button", class: "live-reset", text: "the lesson's view" });
-    reset.title = "put the camera back where the lesson starts";
+    const reset = element("button", { type: "button", class: "live-reset", text: words.lessonsView });
+    reset.title = words.lessonsViewTitle;
     reset.addEventListener("click", () => apply(() => page.reset_camera()));
     rows.push(reset);
 
     const command = element("code", { class: "live-command", text: info.command });
-    const copy = element("button", { type: "button", text: "copy" });
+    const copy = element("button", { type: "button", text: words.copy });
     copy.addEventListener("click", () => {
       navigator.clipboard.writeText(info.command).then(
-        () => (copy.textContent = "copied"),
-        () => (copy.textContent = "select the line to copy it"),
+        () => (copy.textContent = words.copied),
+        () => (copy.textContent = words.selectToCopy),
       );
     });
     const same = element("p", { class: "live-same" }, [
-      "The same on your machine: ",
+      words.same,
       command,
       " ",
       copy,
@@ -321,7 +393,7 @@
 
   function setUp(container) {
     const bar = element("button", { type: "button", class: "live-run" }, [
-      "▶ Run " + container.dataset.lesson + " live in this page (WebGPU, or WebGL2)",
+      words.run(container.dataset.lesson),
     ]);
     bar.addEventListener("click", () => run(container, bar), { once: true });
     container.append(bar);

@@ -333,7 +333,7 @@ impl LivePage {
                  select.value = {value:?};
                  select.dispatchEvent(new Event('change'));
                  const status = document.querySelector('div.live[data-lesson=\"{0}\"] p.live-status');
-                 return status.textContent.startsWith('error') ? status.textContent : 'ok';
+                 return 'failed' in status.dataset ? status.textContent : 'ok';
              }})()",
             self.lesson
         ))?;
@@ -434,11 +434,16 @@ impl LivePage {
     pub fn click_pixel(&self, x: u32, y: u32) -> Result<String> {
         let point = self.evaluate(&format!(
             "(() => {{ const c = document.querySelector('div.live[data-lesson=\"{}\"] canvas');
+                 // What the story shows before the click is not its answer: the click's story
+                 // replaces it (a poll that came before the click's events were handled read the
+                 // last pixel's story).
+                 {}.story.querySelectorAll('*').forEach((e) => (e.dataset.old = ''));
                  c.scrollIntoView({{ block: 'center' }});
                  const r = c.getBoundingClientRect();
                  return [r.left + ({x} + 0.5) * r.width / c.width,
                          r.top + ({y} + 0.5) * r.height / c.height].join(','); }})()",
-            self.lesson
+            self.lesson,
+            self.state()
         ))?;
         let point: Vec<f64> = point.split(',').filter_map(|n| n.parse().ok()).collect();
         let [x, y] = point[..] else {
@@ -452,9 +457,10 @@ impl LivePage {
                  const state = {};
                  const t0 = performance.now();
                  (function poll() {{
-                     const told = state.story.querySelector('pre');
-                     if (!state.telling && (told || state.story.textContent.startsWith('No story')))
-                         resolve(told ? told.textContent : state.story.textContent);
+                     const told = state.story.querySelector('pre:not([data-old])');
+                     const failed = state.story.querySelector('[data-failed]:not([data-old])');
+                     if (!state.telling && (told || failed))
+                         resolve(told ? told.textContent : failed.textContent);
                      else if (performance.now() - t0 > 60000) resolve('no story in 60 s');
                      else setTimeout(poll, 20);
                  }})();

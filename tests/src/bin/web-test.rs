@@ -174,6 +174,13 @@ fn run() -> Result<bool> {
                     .push(format!("{lesson} on {}: {error:#}", backend.shown()));
             }
         }
+        let lesson = lessons.first().context("no lesson to test")?;
+        if let Err(error) = test_chinese_page(&browser, &site, lesson, &out) {
+            outcome.failures.push(format!(
+                "{lesson}'s Chinese page on {}: {error:#}",
+                backend.shown()
+            ));
+        }
     }
     let selected: Vec<&BookShot> = shots
         .iter()
@@ -365,6 +372,61 @@ fn story_screenshot(site: &str, path: &Path) -> Result<()> {
     let png = page.screenshot(true)?;
     std::fs::write(path, png).with_context(|| format!("cannot write {}", path.display()))?;
     println!("web-test: wrote {}", path.display());
+    Ok(())
+}
+
+/// The Chinese book's page of `lesson`, run live: the page's own words in Chinese, none missing
+/// from its table, and no Latin word in what it shows but the program's own (knob names and values,
+/// step names, buffers, the command line, the backend and the adapter), which the book quotes as
+/// the program prints them. Its screenshot goes to `out`.
+fn test_chinese_page(browser: &WebBrowser, site: &str, lesson: &str, out: &Path) -> Result<()> {
+    let page = browser.open(&format!("{site}/zh-CN"), lesson)?;
+    let missing = page.evaluate("JSON.stringify(window.workbookLive.untranslated['zh-CN'])")?;
+    if missing != "[]" {
+        bail!("the live page's words without their Chinese (book/web/live.js's WORDS): {missing}");
+    }
+    let english = page.evaluate(&format!(
+        r#"(() => {{
+             const container = document.querySelector('div.live[data-lesson="{lesson}"]');
+             const info = JSON.parse(window.workbookLive['{lesson}'].page.describe());
+             const program = new Set(['{lesson}', info.backend, 'WebGPU', 'WebGL2', '--step',
+                 '--show', '--pixel', ...info.knobs.map((k) => k.name), ...info.steps,
+                 ...info.shows.map((s) => s.name)]);
+             const texts = [];
+             const walker = document.createTreeWalker(container, NodeFilter.SHOW_TEXT);
+             for (let node = walker.nextNode(); node; node = walker.nextNode()) {{
+                 if (node.parentElement.closest('code, pre, option')) continue;
+                 texts.push(node.textContent);
+             }}
+             for (const option of container.querySelectorAll('option')) {{
+                 const text = option.textContent;
+                 texts.push(text.startsWith(option.value) ? text.slice(option.value.length).split(' — ')[0] : text);
+             }}
+             // The adapter is the browser's own name for it; the program's words may be phrases.
+             let shown = texts.join(' ').replace(/运行在 .*? 上/, '');
+             for (const words of [...program].sort((a, b) => b.length - a.length))
+                 shown = shown.split(words).join(" ");
+             const latin = shown.match(/[A-Za-z][A-Za-z0-9'-]*/g) || [];
+             return JSON.stringify({{ latin, status: container.querySelector('p.live-status').textContent }});
+         }})()"#
+    ))?;
+    let found: serde_json::Value = serde_json::from_str(&english)?;
+    println!(
+        "  {:7} {lesson} (zh-CN): {}",
+        browser.backend.name(),
+        found["status"].as_str().unwrap_or_default()
+    );
+    let latin = found["latin"].as_array().context("no words read")?;
+    if !latin.is_empty() {
+        bail!("the Chinese page shows English words of its own: {latin:?}");
+    }
+    let path = out.join(format!("{lesson}-zh-CN-{}.png", browser.backend.name()));
+    std::fs::write(&path, page.screenshot(true)?)?;
+    println!(
+        "  {:7} {lesson} (zh-CN): every word of the page's own in Chinese; {}",
+        browser.backend.name(),
+        path.display()
+    );
     Ok(())
 }
 
