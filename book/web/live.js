@@ -206,7 +206,7 @@
     state.controls = controls;
     state.refresh = refresh;
     build(controls, page, status, redraw, refresh, whenFree);
-    orbitWithTheMouse(canvas, state);
+    orbitWithThePointer(canvas, state);
     // Last: the tests wait for this, and then find the page complete.
     live[lesson] = state;
   }
@@ -224,22 +224,47 @@
     }
   }
 
-  // Drag to orbit, wheel to zoom, as in the window; a click that does not drag picks a pixel.
-  // While a pixel's story is read the lesson is busy: the mouse waits.
-  function orbitWithTheMouse(canvas, state) {
+  // Drag to orbit, wheel to zoom, as in the window; a click that does not drag picks a pixel. On a
+  // touch screen the same with a finger (a tap picks), and two fingers pinch to zoom.
+  // While a pixel's story is read the lesson is busy: the pointer waits.
+  function orbitWithThePointer(canvas, state) {
     const { page } = state;
     // The canvas may be drawn smaller than its pixels: move as if at full size.
     const scale = () => canvas.width / canvas.getBoundingClientRect().width;
+    const down = new Map();
     let last = null;
     let dragged = 0;
+    // The two fingers' distance at the last move, while they pinch.
+    let pinch = null;
+    const spread = () => {
+      const [a, b] = [...down.values()];
+      return Math.hypot(a[0] - b[0], a[1] - b[1]);
+    };
     canvas.addEventListener("pointerdown", (event) => {
       if (state.telling) return;
+      down.set(event.pointerId, [event.clientX, event.clientY]);
+      canvas.setPointerCapture(event.pointerId);
+      if (down.size === 2) {
+        // A pinch, not a drag: no pixel is picked when its fingers lift.
+        pinch = spread();
+        dragged = Infinity;
+        return;
+      }
       last = [event.clientX, event.clientY];
       dragged = 0;
-      canvas.setPointerCapture(event.pointerId);
     });
     canvas.addEventListener("pointermove", (event) => {
-      if (!last || state.telling) return;
+      if (!down.has(event.pointerId) || state.telling) return;
+      down.set(event.pointerId, [event.clientX, event.clientY]);
+      if (pinch !== null && down.size === 2) {
+        // The camera's distance follows the fingers' (a step of the wheel is a factor of 0.9).
+        const now = spread();
+        if (now > 0 && pinch > 0) page.zoom(Math.log(now / pinch) / -Math.log(0.9));
+        pinch = now;
+        state.redraw();
+        return;
+      }
+      if (!last) return;
       const [dx, dy] = [event.clientX - last[0], event.clientY - last[1]];
       dragged += Math.abs(dx) + Math.abs(dy);
       page.orbit(dx * scale(), dy * scale());
@@ -249,20 +274,30 @@
     // When a drag ends the pose is rounded as `--camera` writes it, so that the command line
     // below draws exactly the picture on the canvas.
     const stop = (event) => {
-      if (!last) return;
-      last = null;
+      if (!down.delete(event.pointerId)) return;
+      if (down.size > 0) {
+        last = null;
+        return;
+      }
+      pinch = null;
       if (dragged < 3 && event.type === "pointerup") {
         const box = canvas.getBoundingClientRect();
         const x = Math.floor((event.clientX - box.left) * scale());
         const y = Math.floor((event.clientY - box.top) * (canvas.height / box.height));
         if (x >= 0 && y >= 0 && x < canvas.width && y < canvas.height) state.pixel = [x, y];
       }
+      last = null;
       page.set_camera(JSON.parse(page.describe()).camera);
       state.redraw();
       state.refresh();
     };
     canvas.addEventListener("pointerup", stop);
     canvas.addEventListener("pointercancel", stop);
+    zoomWithTheWheel(canvas, state);
+  }
+
+  function zoomWithTheWheel(canvas, state) {
+    const { page } = state;
     canvas.addEventListener(
       "wheel",
       (event) => {

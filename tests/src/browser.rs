@@ -177,6 +177,29 @@ impl WebBrowser {
     /// Opens `lesson`'s page of the book at `site`, clicks "Run" and waits for the first frame.
     pub fn open(&self, site: &str, lesson: &str) -> Result<LivePage> {
         let tab = self.browser.new_tab().map_err(|e| anyhow!("no tab: {e}"))?;
+        self.open_in(tab, site, lesson)
+    }
+
+    /// [`Self::open`] on a phone: a 390×844 screen of three pixels a point, touch and no mouse.
+    pub fn open_on_a_phone(&self, site: &str, lesson: &str) -> Result<LivePage> {
+        use headless_chrome::protocol::cdp::Emulation;
+        let tab = self.browser.new_tab().map_err(|e| anyhow!("no tab: {e}"))?;
+        let metrics: Emulation::SetDeviceMetricsOverride =
+            serde_json::from_value(serde_json::json!({
+                "width": 390, "height": 844, "deviceScaleFactor": 3, "mobile": true,
+            }))?;
+        tab.call_method(metrics)
+            .map_err(|e| anyhow!("no phone's screen: {e}"))?;
+        let touch = Emulation::SetTouchEmulationEnabled {
+            enabled: true,
+            max_touch_points: Some(5),
+        };
+        tab.call_method(touch)
+            .map_err(|e| anyhow!("no touch: {e}"))?;
+        self.open_in(tab, site, lesson)
+    }
+
+    fn open_in(&self, tab: Arc<Tab>, site: &str, lesson: &str) -> Result<LivePage> {
         tab.set_default_timeout(Duration::from_secs(120));
         let url = format!("{site}/{lesson}.html?backend={}", self.backend.name());
         tab.navigate_to(&url)
@@ -429,6 +452,53 @@ impl LivePage {
         Ok(())
     }
 
+    /// Touches the screen at `points` (CSS pixels of the page's viewport) as `kind` says
+    /// (`touchStart`, `touchMove`, `touchEnd`), a finger each.
+    pub fn touch(&self, kind: &str, points: &[(f64, f64)]) -> Result<()> {
+        use headless_chrome::protocol::cdp::Input;
+        let points: Vec<serde_json::Value> = (points.iter().enumerate())
+            .map(|(id, (x, y))| serde_json::json!({ "x": x, "y": y, "id": id }))
+            .collect();
+        let event: Input::DispatchTouchEvent =
+            serde_json::from_value(serde_json::json!({ "type": kind, "touchPoints": points }))?;
+        self.tab
+            .call_method(event)
+            .map_err(|e| anyhow!("cannot touch the page: {e}"))?;
+        Ok(())
+    }
+
+    /// Where the canvas is in the page's viewport: its centre and its width, in CSS pixels,
+    /// scrolled into view.
+    pub fn canvas_on_screen(&self) -> Result<((f64, f64), f64)> {
+        let found = self.evaluate(&format!(
+            "(() => {{ const c = document.querySelector('div.live[data-lesson=\"{}\"] canvas');
+                 c.scrollIntoView({{ block: 'center' }});
+                 const r = c.getBoundingClientRect();
+                 return [r.left + r.width / 2, r.top + r.height / 2, r.width].join(','); }})()",
+            self.lesson
+        ))?;
+        let found: Vec<f64> = found.split(',').filter_map(|n| n.parse().ok()).collect();
+        match found[..] {
+            [x, y, width] => Ok(((x, y), width)),
+            _ => bail!("{}: no canvas on the screen", self.lesson),
+        }
+    }
+
+    /// The camera as the page's command line writes it: yaw, pitch, distance.
+    pub fn camera(&self) -> Result<[f64; 3]> {
+        let pose = self.evaluate(&format!(
+            "JSON.parse({}.page.describe()).camera",
+            self.state()
+        ))?;
+        let pose: Vec<f64> = pose.split(',').filter_map(|n| n.parse().ok()).collect();
+        pose.try_into().map_err(|pose| {
+            anyhow!(
+                "{}: the camera is not yaw,pitch,distance: {pose:?}",
+                self.lesson
+            )
+        })
+    }
+
     /// Clicks pixel (`x`, `y`) of the canvas with the mouse, as a reader does, and returns what the
     /// page then shows under its controls: the pixel's story, or why there is none.
     pub fn click_pixel(&self, x: u32, y: u32) -> Result<String> {
@@ -452,6 +522,23 @@ impl LivePage {
         self.tab
             .click_point(headless_chrome::browser::tab::point::Point { x, y })
             .map_err(|e| anyhow!("cannot click the canvas: {e}"))?;
+        self.story_told()
+    }
+
+    /// Taps the canvas at `point` (CSS pixels of the viewport) with a finger, and returns what the
+    /// page then shows under its controls, as [`Self::click_pixel`] does.
+    pub fn tap(&self, point: (f64, f64)) -> Result<String> {
+        self.evaluate(&format!(
+            "{}.story.querySelectorAll('*').forEach((e) => (e.dataset.old = ''))",
+            self.state()
+        ))?;
+        self.touch("touchStart", &[point])?;
+        self.touch("touchEnd", &[])?;
+        self.story_told()
+    }
+
+    /// The story told after the last click or tap (not one shown before it), or why there is none.
+    fn story_told(&self) -> Result<String> {
         self.evaluate(&format!(
             "new Promise((resolve) => {{
                  const state = {};

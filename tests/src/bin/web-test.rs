@@ -181,6 +181,12 @@ fn run() -> Result<bool> {
                 backend.shown()
             ));
         }
+        if let Err(error) = test_phone(&browser, &site, lesson, &out) {
+            let on = backend.shown();
+            outcome
+                .failures
+                .push(format!("{lesson} on a phone, {on}: {error:#}"));
+        }
     }
     let selected: Vec<&BookShot> = shots
         .iter()
@@ -425,6 +431,57 @@ fn test_chinese_page(browser: &WebBrowser, site: &str, lesson: &str, out: &Path)
     println!(
         "  {:7} {lesson} (zh-CN): every word of the page's own in Chinese; {}",
         browser.backend.name(),
+        path.display()
+    );
+    Ok(())
+}
+
+/// `lesson`'s page on a phone (390×844 points, touch, no mouse): one finger drawn across the
+/// canvas orbits, two moving apart zoom in, and a tap picks a pixel (its story told on WebGPU, on
+/// WebGL2 the page's reason why not). The phone's screenshot goes to `out`.
+fn test_phone(browser: &WebBrowser, site: &str, lesson: &str, out: &Path) -> Result<()> {
+    let on = browser.backend.name();
+    let page = browser.open_on_a_phone(site, lesson)?;
+    let ((x, y), width) = page.canvas_on_screen()?;
+    let start = page.camera()?;
+    page.touch("touchStart", &[(x, y)])?;
+    for k in 1..=10 {
+        page.touch("touchMove", &[(x + width * k as f64 / 30.0, y)])?;
+    }
+    page.touch("touchEnd", &[])?;
+    let orbited = page.camera()?;
+    if orbited[0] == start[0] || orbited[2] != start[2] {
+        bail!(
+            "one finger across the canvas should orbit: the camera went from {start:?} to {orbited:?}"
+        );
+    }
+    // Fingers twice as far apart: the camera at about half its distance (0.9 a step of the wheel).
+    let apart = |d: f64| [(x - d, y), (x + d, y)];
+    page.touch("touchStart", &apart(width / 8.0))?;
+    for k in 1..=10 {
+        page.touch("touchMove", &apart(width / 8.0 * (1.0 + k as f64 / 10.0)))?;
+    }
+    page.touch("touchEnd", &[])?;
+    let pinched = page.camera()?;
+    let ratio = pinched[2] / orbited[2];
+    if !(0.4..=0.6).contains(&ratio) || pinched[..2] != orbited[..2] {
+        bail!(
+            "a pinch to twice the fingers' distance should halve the camera's: {orbited:?} to {pinched:?}"
+        );
+    }
+    let told = page.tap((x, y))?;
+    let story = told.starts_with("Pixel (") || (on == "webgl2" && told.starts_with("No story"));
+    if !story {
+        bail!("a tap on the canvas told no story: `{told}`");
+    }
+    let path = out.join(format!("{lesson}-phone-{on}.png"));
+    std::fs::write(&path, page.screenshot(false)?)?;
+    println!(
+        "  {on:7} {lesson} on a phone: a finger orbits (yaw {} → {}), a pinch zooms (distance {} → {}), a tap tells a story; {}",
+        start[0],
+        orbited[0],
+        orbited[2],
+        pinched[2],
         path.display()
     );
     Ok(())
