@@ -63,6 +63,11 @@ for po in po/*.po; do
   settings=(MDBOOK_BOOK__LANGUAGE="$language")
   [ -z "$title" ] || settings+=(MDBOOK_BOOK__TITLE="$title")
   build "$work/$language" "${settings[@]}"
+  # A language written without spaces: its search index holds the text as characters and pairs of
+  # characters, which web/search.js cuts a query into (po/cjk-search.py).
+  case "$language" in
+    zh* | ja* | ko*) python3 po/cjk-search.py "$work/$language/html" ;;
+  esac
   if grep -rl 'katex-error' "$work/$language/html" --include=*.html; then
     echo "book: KaTeX errors in the $language book (the pages above)" >&2
     exit 1

@@ -27,7 +27,7 @@
       ["#mdbook-theme-ayu", null, "Ayu"],
       ["#mdbook-search-toggle", "title", "搜索（`/`）"],
       ["#mdbook-search-toggle", "aria-label", "显示或隐藏搜索栏"],
-      ["#mdbook-searchbar", "placeholder", "搜索本书（按空格分词：中文请用打印页加浏览器查找）"],
+      ["#mdbook-searchbar", "placeholder", "搜索本书（中文、英文均可）"],
       ["a[href$='print.html']", "title", "打印本书"],
       ["a[href$='print.html']", "aria-label", "打印本书"],
       ["a[rel~='prev']", "title", "上一章"],
@@ -49,10 +49,9 @@
         "按 <kbd>Esc</kbd> 隐藏本帮助",
       ],
       results: (count, term) => `找到 ${count} 条“${term}”的搜索结果：`,
-      // mdBook's search splits the text at spaces, which Chinese does not have: say what works.
-      none: (term) =>
-        `没有找到“${term}”。本书的搜索按空格分词，只能找到英文词、代码名和前后有空格的中文词；` +
-        `要在全书中查找中文，请打开打印页（右上角的打印按钮），再用浏览器的页内查找（Ctrl+F）。`,
+      // The search finds Chinese words by their pairs of characters (web/search.js): what finds
+      // nothing is not in the book, or is said otherwise.
+      none: (term) => `没有找到“${term}”。试试更短的词，或换用英文术语。`,
     },
   };
 

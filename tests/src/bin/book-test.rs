@@ -19,10 +19,23 @@
 //! formulas, so a book built without KaTeX fails rather than compare nothing with nothing.
 //!
 //! Then, on a lesson page, the language picker in the menu bar goes to the same page in the other
-//! language and back, and the search speaks the page's language: it finds an English word, and
-//! where mdBook's search cannot find a Chinese word (it splits the text at spaces) it says what to
-//! use instead. `--screenshots DIR` writes the picker open on both (default:
-//! `target/book-test/`).
+//! language and back, and the search speaks the page's language and finds it, as a reader asks it
+//! (`?search=`):
+//!
+//! - in a translation, an English word finds pages, under a results header in the page's language,
+//!   and a word that is nowhere gets the page's own "nothing found";
+//! - in Chinese, the index holds the text's pairs of characters (`book/po/cjk-search.py`, which
+//!   `book/build.sh` runs: an index without them fails here), and 模板缓冲区, 反射矩阵, 环绕顺序, the
+//!   mixed "stencil 掩码" and the one character 镜 each find the page they name among the first
+//!   results, the first result holding every word asked (see [`CHINESE_SEARCHES`]); also when the
+//!   index came, and was searched, before `book/web/search.js` (which cuts the query into the same
+//!   pairs) ran;
+//! - English search is what mdBook made it: in every book, each of a dozen English queries gives the
+//!   same results, pages, order and scores, through `web/search.js`'s tokenizer and pipeline as
+//!   through elasticlunr's own (see [`ENGLISH_SEARCHES`]).
+//!
+//! `--screenshots DIR` writes the picker open on both books, and the Chinese search's results for
+//! 模板缓冲区 (`search-zh.png`) (default: `target/book-test/`).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -38,7 +51,7 @@ use workbook_tests::workspace;
     about = "The built book's translations in headless Chromium"
 )]
 struct Args {
-    /// Where to write the language picker's screenshots.
+    /// Where to write the screenshots: the language picker, and the Chinese search's results.
     #[arg(long, value_name = "DIR")]
     screenshots: Option<PathBuf>,
 }
@@ -199,6 +212,8 @@ fn run() -> Result<bool> {
         .filter(|name| name.ends_with(".html") && !matches!(name.as_str(), "404.html" | "toc.html"))
         .collect();
     pages.sort();
+    let shots = (args.screenshots.clone()).unwrap_or_else(|| root.join("target/book-test"));
+    std::fs::create_dir_all(&shots)?;
     let site = browser::serve(&site_root)?;
     let chrome = WebBrowser::launch(WebBackend::WebGl2)?;
     let mut failures = Vec::new();
@@ -241,14 +256,18 @@ fn run() -> Result<bool> {
             "{language}: {} pages, {formulas} formulas (compared paragraph by paragraph), {listings} listings and {images} images as in English",
             pages.len()
         );
-        picker(&chrome, &site, language, &args, &mut failures)?;
-        search(&chrome, &site, language, &mut failures)?;
+        picker(&chrome, &site, language, &shots, &mut failures)?;
+        search(&chrome, &site, language, &shots, &mut failures)?;
+        english_search_unchanged(&chrome, &site, &format!("{language}/"), &mut failures)?;
     }
+    english_search_unchanged(&chrome, &site, "", &mut failures)?;
     for failure in &failures {
         eprintln!("book-test: {failure}");
     }
     if failures.is_empty() {
-        println!("book-test: every translated page renders its math, listings and figures");
+        println!(
+            "book-test: every translated page renders its math, listings and figures, and the search finds both languages"
+        );
     }
     Ok(failures.is_empty())
 }
@@ -447,40 +466,265 @@ fn has_math(markdown: &str) -> bool {
     false
 }
 
-/// The search box of a translated lesson page, asked for an English word and for a Chinese one
-/// (through `?search=`, as mdBook's own links to results do): its results header, in the page's
-/// language.
+/// Queries of the Chinese book, each with the page that must be among its first N results (`None`:
+/// any page will do). Chosen from the Chinese text: each page is the lesson that the words name, and
+/// says them most often (掩码 is the stencil's masks, which lesson 2 teaches). The first result must
+/// also hold every word of the query, and a single character must find something.
+const CHINESE_SEARCHES: [(&str, Option<&str>, usize); 5] = [
+    ("模板缓冲区", Some("stencil-basics.html"), 3),
+    ("反射矩阵", Some("reflect-skull.html"), 1),
+    ("环绕顺序", Some("winding-fix.html"), 1),
+    ("stencil 掩码", Some("stencil-basics.html"), 3),
+    ("镜", None, 0),
+];
+
+/// English queries whose results, with web/search.js, must be elasticlunr's own, in every book.
+const ENGLISH_SEARCHES: [&str; 12] = [
+    "stencil",
+    "reflection matrix",
+    "winding",
+    "depth buffer",
+    "mirror",
+    "clockwise",
+    "FLIP",
+    "blend",
+    "StencilFaceState",
+    "cargo",
+    "--show stencil",
+    "front_face Ccw",
+];
+
+/// The search of `site`'s page `page` asked for `term` through `?search=` (as mdBook's own links to
+/// results ask it), once its results header names `term` in the page's language: the header, and
+/// the results in order, each its page, its address in the index and its section's text (title,
+/// body and breadcrumbs, from the index's documents).
+const SEARCHED: &str = r"new Promise((resolve) => {
+    const t0 = performance.now();
+    (function poll() {
+        const h = document.getElementById('mdbook-searchresults-header');
+        const header = h ? h.textContent : '';
+        const done = header.includes(TERM) && (!TRANSLATED || /[\u4e00-\u9fff]/.test(header));
+        if (done && window.search && window.search.index) {
+            const urls = window.search.doc_urls, docs = window.search.index.documentStore.docs;
+            const results = [...document.querySelectorAll('#mdbook-searchresults li > a')].map((a) => {
+                const [path, anchor] = a.getAttribute('href').slice(path_to_root.length).split('#');
+                const page = path.split('?')[0];
+                const url = anchor ? page + '#' + anchor : page;
+                const doc = docs[urls.indexOf(url)];
+                return [page, url, doc ? [doc.title, doc.body, doc.breadcrumbs].join(' ') : ''];
+            });
+            resolve(JSON.stringify({ header, results }));
+        } else if (performance.now() - t0 > 20000) resolve(JSON.stringify({ header, results: [] }));
+        else setTimeout(poll, 50);
+    })();
+})";
+
+/// What [`SEARCHED`] says: the results header, and each result's page, address and text.
+struct Searched {
+    header: String,
+    results: Vec<(String, String, String)>,
+}
+
+/// Searches `page` (an address under `site`) for `term`, and leaves it open on the results.
+fn searched(
+    chrome: &WebBrowser,
+    site: &str,
+    page: &str,
+    term: &str,
+) -> Result<(BookPage, Searched)> {
+    let query: String = term.bytes().map(|b| format!("%{b:02X}")).collect();
+    let opened = chrome.page(&format!("{site}/{page}?search={query}"))?;
+    let translated = !page.starts_with(PICKER_PAGE);
+    let script = SEARCHED
+        .replace("TERM", &serde_json::to_string(term)?)
+        .replace("TRANSLATED", &translated.to_string());
+    let json = opened.evaluate(&script)?;
+    let value: serde_json::Value =
+        serde_json::from_str(&json).with_context(|| format!("the search said {json:.200}"))?;
+    let results = (value["results"].as_array())
+        .context("the search's results are not a list")?
+        .iter()
+        .map(|result| {
+            let text = |i: usize| result[i].as_str().unwrap_or_default().to_string();
+            (text(0), text(1), text(2))
+        })
+        .collect();
+    let header = value["header"].as_str().unwrap_or_default().to_string();
+    Ok((opened, Searched { header, results }))
+}
+
+/// The search of a translated lesson page, as a reader uses it (through `?search=`): an English
+/// word finds pages, with the results header in the page's language, and a word that is nowhere
+/// gets the page's "none". In Chinese, the index holds the text's pairs of characters
+/// (po/cjk-search.py), and each of [`CHINESE_SEARCHES`] finds its page; it still does when the
+/// index was loaded and searched before web/search.js came. A screenshot of the results for
+/// 模板缓冲区 goes into `dir`.
 fn search(
     chrome: &WebBrowser,
     site: &str,
     language: &str,
+    dir: &Path,
     failures: &mut Vec<String>,
 ) -> Result<()> {
-    // What the header must say: results for an English word; for a word inside Chinese sentences,
-    // none, and the way to find it (the print page and the browser's find).
-    let cases = [("stencil", "找到"), ("模板缓冲区", "Ctrl+F")];
-    for (term, expected) in cases {
-        let query: String = term.bytes().map(|b| format!("%{b:02X}")).collect();
-        let page = chrome.page(&format!("{site}/{language}/{PICKER_PAGE}?search={query}"))?;
-        let header = page.evaluate(
-            r"new Promise((resolve) => {
-                 const t0 = performance.now();
-                 (function poll() {
-                     const h = document.getElementById('mdbook-searchresults-header');
-                     const text = h ? h.textContent : '';
-                     if (/[\u4e00-\u9fff]/.test(text) || performance.now() - t0 > 20000) resolve(text);
-                     else setTimeout(poll, 50);
-                 })();
-             })",
-        )?;
-        if !header.contains(expected) {
+    let at = format!("{language}/{PICKER_PAGE}");
+    for (term, expected) in [("stencil", "找到"), ("xyzzy", "没有找到")] {
+        let (_, found) = searched(chrome, site, &at, term)?;
+        if !found.header.contains(expected) {
             failures.push(format!(
-                "{language}/{PICKER_PAGE}?search={term}: the results header says {header:?}"
+                "{at}?search={term}: the results header says {:?}",
+                found.header
             ));
         } else {
-            println!("search for {term:?}: {header}");
+            println!("search for {term:?}: {}", found.header);
         }
     }
+    if !language.starts_with("zh") {
+        return Ok(());
+    }
+    // The index itself: 模板 (a pair) under the body's 模.
+    let (page, _) = searched(chrome, site, &at, "stencil")?;
+    let pairs = page.evaluate(
+        "(() => { const m = window.search.index.index.body.root['模'];
+                  return String(m && m['板'] ? m['板'].df : 0); })()",
+    )?;
+    if pairs == "0" {
+        failures.push(format!(
+            "{language}: the search index holds no pairs of Chinese characters (模板 in no section): \
+             book/po/cjk-search.py did not run on it"
+        ));
+    }
+    for (term, page, within) in CHINESE_SEARCHES {
+        let (opened, found) = searched(chrome, site, &at, term)?;
+        let mut fail = |what: String| failures.push(format!("{at}?search={term}: {what}"));
+        let first: Vec<&str> = (found.results.iter().take(3))
+            .map(|(_, url, _)| url.as_str())
+            .collect();
+        let Some((_, url, text)) = found.results.first() else {
+            fail(format!("no results ({:?})", found.header));
+            continue;
+        };
+        let text = text.to_lowercase();
+        if let Some(missing) = term.split_whitespace().find(|word| !text.contains(word)) {
+            fail(format!("the first result, {url}, has no {missing:?}"));
+        }
+        if let Some(page) = page
+            && !(found.results.iter().take(within)).any(|(shown, _, _)| shown == page)
+        {
+            fail(format!("{page} is not among the first {within}: {first:?}"));
+        }
+        println!(
+            "search for {term:?}: {} results shown, the first three {}",
+            found.results.len(),
+            first.join(", ")
+        );
+        if term == CHINESE_SEARCHES[0].0 {
+            let shot = dir.join("search-zh.png");
+            std::fs::write(&shot, opened.screenshot()?)?;
+            println!("wrote {}", shot.display());
+        }
+    }
+    // An index loaded, and searched, before web/search.js ran (a race the page can lose when the
+    // address asks for a search): the script, run again after elasticlunr's own tokenizer and
+    // pipeline are put back and a Chinese query searched with them, searches it again.
+    let (page, _) = searched(chrome, site, &at, "stencil")?;
+    let late = page.evaluate(
+        r"new Promise((resolve) => {
+            const lunr = window.elasticlunr;
+            lunr.tokenizer = lunr.tokenizer.original;
+            lunr.Pipeline.prototype.run = lunr.Pipeline.prototype.run.original;
+            const bar = document.getElementById('mdbook-searchbar');
+            bar.value = '反射矩阵';
+            bar.dispatchEvent(new KeyboardEvent('keyup'));
+            const before = document.querySelectorAll('#mdbook-searchresults li').length;
+            const script = document.createElement('script');
+            script.src = [...document.scripts].find((s) => /\/search(-[0-9a-f]+)?\.js$/.test(s.src)).src;
+            script.onload = () => {
+                const first = document.querySelector('#mdbook-searchresults li > a');
+                resolve(before + ' ' + (first ? first.getAttribute('href').split('?')[0] : 'none'));
+            };
+            document.head.append(script);
+        })",
+    )?;
+    if late != format!("0 {}", CHINESE_SEARCHES[1].1.unwrap_or_default()) {
+        failures.push(format!(
+            "{at}: 反射矩阵 searched before web/search.js ran, then after: {late:?} (results before, \
+             the first page after), not 0 and {}",
+            CHINESE_SEARCHES[1].1.unwrap_or_default()
+        ));
+    } else {
+        println!("search for \"反射矩阵\" before web/search.js ran: searched again when it came");
+    }
+    Ok(())
+}
+
+/// English search unchanged by web/search.js: in the book under `book` (`""`, or a translation's
+/// `zh-CN/`), each of [`ENGLISH_SEARCHES`] gives the same results, in the same order and with the
+/// same scores, through the wrapped tokenizer and pipeline as through elasticlunr's own (kept by
+/// web/search.js as `.original`), on the book's own index.
+fn english_search_unchanged(
+    chrome: &WebBrowser,
+    site: &str,
+    book: &str,
+    failures: &mut Vec<String>,
+) -> Result<()> {
+    let (page, _) = searched(chrome, site, &format!("{book}{PICKER_PAGE}"), "stencil")?;
+    let script = r"(() => {
+        const lunr = window.elasticlunr;
+        const tokenizer = lunr.tokenizer, run = lunr.Pipeline.prototype.run;
+        if (!tokenizer.original || !run.original)
+            return JSON.stringify({ error: 'web/search.js did not wrap elasticlunr' });
+        const index = lunr.Index.load(window.search.index);
+        const search = (query) => index.search(query, window.search.search_options)
+            .map((r) => [window.search.doc_urls[r.ref], r.score]);
+        const out = {};
+        for (const query of QUERIES) {
+            const wrapped = search(query);
+            lunr.tokenizer = tokenizer.original;
+            lunr.Pipeline.prototype.run = run.original;
+            try { out[query] = [wrapped, search(query)]; }
+            finally { lunr.tokenizer = tokenizer; lunr.Pipeline.prototype.run = run; }
+        }
+        return JSON.stringify(out);
+    })()"
+        .replace("QUERIES", &serde_json::to_string(&ENGLISH_SEARCHES)?);
+    let json = page.evaluate(&script)?;
+    let value: serde_json::Value =
+        serde_json::from_str(&json).with_context(|| format!("the page said {json:.200}"))?;
+    let name = if book.is_empty() {
+        "en"
+    } else {
+        book.trim_end_matches('/')
+    };
+    if let Some(error) = value.get("error") {
+        failures.push(format!("{name} {PICKER_PAGE}: {error}"));
+        return Ok(());
+    }
+    let mut results = 0;
+    for query in ENGLISH_SEARCHES {
+        let urls = |i: usize| -> Vec<&str> {
+            (value[query][i].as_array().into_iter().flatten())
+                .filter_map(|result| result[0].as_str())
+                .collect()
+        };
+        let (wrapped, original) = (urls(0), urls(1));
+        // Every query finds something in the English book: equal lists of nothing prove nothing.
+        if value[query][0] != value[query][1] || (book.is_empty() && wrapped.is_empty()) {
+            failures.push(format!(
+                "{name}: search for {query:?}: {} results through web/search.js, {} through \
+                 elasticlunr's own tokenizer (first {:?} against {:?})",
+                wrapped.len(),
+                original.len(),
+                &wrapped[..wrapped.len().min(3)],
+                &original[..original.len().min(3)]
+            ));
+        }
+        results += wrapped.len();
+    }
+    println!(
+        "{name}: {} English queries, {results} results, the same through web/search.js as through \
+         elasticlunr's own tokenizer and pipeline (pages, order and scores)",
+        ENGLISH_SEARCHES.len()
+    );
     Ok(())
 }
 
@@ -508,14 +752,9 @@ fn picker(
     chrome: &WebBrowser,
     site: &str,
     language: &str,
-    args: &Args,
+    dir: &Path,
     failures: &mut Vec<String>,
 ) -> Result<()> {
-    let dir = args
-        .screenshots
-        .clone()
-        .unwrap_or_else(|| workspace().join("target/book-test"));
-    std::fs::create_dir_all(&dir)?;
     let page = chrome.page(&format!("{site}/{PICKER_PAGE}"))?;
     let steps = [("en", language), (language, "en")];
     for (from, to) in steps {
