@@ -15,7 +15,12 @@ use std::rc::Rc;
 use lessons::{ForLesson, for_lesson};
 use wasm_bindgen::prelude::*;
 use workbook::Lesson;
+use workbook::app::heap;
 use workbook::app::web::{self, Backend, Page};
+
+/// Counts the Rust heap's live bytes, which a long session in a page measures ([`heap_bytes`]).
+#[global_allocator]
+static ALLOCATOR: heap::Counting = heap::Counting;
 
 /// A lesson running in a canvas. Shared, because a pixel's story is awaited: its promise holds the
 /// lesson until the story is read, and the lesson is busy until then (the page waits for it).
@@ -31,6 +36,13 @@ pub fn lessons() -> Vec<String> {
         .iter()
         .map(|name| name.to_string())
         .collect()
+}
+
+/// The bytes live on the module's Rust heap: what `cargo web-test --soak` watches over a long
+/// session (the module's memory itself only grows, by 64 KiB pages, so it hides a slow leak).
+#[wasm_bindgen]
+pub fn heap_bytes() -> f64 {
+    heap::live_bytes() as f64
 }
 
 /// Starts the lesson called `lesson` in `canvas`, its room built from the files at the URL `assets`;
