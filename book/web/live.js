@@ -9,6 +9,10 @@
 // A click (not a drag) on the canvas picks a pixel: a cross marks it, and its story through the
 // frame, as `--pixel X,Y` tells it, is shown under the controls and told again after every change.
 //
+// Where the browser has neither backend, the status line says which browsers run the lessons and
+// gives the native command; a lost GPU (a reset, a tab put away on a phone) stops the lesson, and
+// the status line's "Run again" starts it afresh.
+//
 // `?backend=webgl2` (or `webgpu`) in the page's address picks the backend. The tests read the
 // canvas through `window.workbookLive` (see tests/src/web.rs).
 //
@@ -36,10 +40,11 @@
         backend + " on " + adapter + " · first frame " + seconds + " s after Run",
       anAdapter: "this browser's adapter",
       error: (why) => "error: " + why,
-      pickAPixel: "Click a pixel of the picture to read its story through the frame.",
-      told: (x, y) =>
-        "Pixel " + x + "," + y + " (click another, or drag to orbit). The same on your machine: add --pixel " +
-        x + "," + y + " to the command line above.",
+      pickAPixel: (touch) =>
+        (touch ? "Tap" : "Click") + " a pixel of the picture to read its story through the frame.",
+      told: (x, y, touch) =>
+        "Pixel " + x + "," + y + " (" + (touch ? "tap" : "click") + " another, or drag to orbit). " +
+        "The same on your machine: add --pixel " + x + "," + y + " to the command line above.",
       noStory: (x, y, why) => "No story for pixel " + x + "," + y + ": " + why,
       byDefault: " (default)",
       step: "step ",
@@ -54,6 +59,15 @@
       copied: "copied",
       selectToCopy: "select the line to copy it",
       same: "The same on your machine: ",
+      noBackend: (lesson, why) =>
+        "Neither WebGPU nor WebGL2 runs in this browser (" + why + "), so the lesson cannot run here: " +
+        "the figures below show its pictures. The lessons run live in Chrome and Edge 113 or later, " +
+        "Firefox 141 or later and Safari 26 or later on WebGPU, and in any browser since Chrome 56, " +
+        "Firefox 51 and Safari 15 on WebGL2, with hardware acceleration turned on (in Chrome: " +
+        "Settings → System; on Linux, WebGPU behind chrome://flags/#enable-unsafe-webgpu). Or on your " +
+        "machine: cargo run -p " + lesson,
+      lost: (why) => "The GPU was lost (" + why + "): the lesson stopped. ",
+      runAgain: "▶ Run again",
     },
     "zh-CN": {
       run: (lesson) => "▶ 在本页中运行 " + lesson + "（WebGPU，或 WebGL2）",
@@ -63,7 +77,7 @@
         backend + "，运行在 " + adapter + " 上 · 点击运行后 " + seconds + " 秒画出第一帧",
       anAdapter: "此浏览器的适配器",
       error: (why) => "错误：" + why,
-      pickAPixel: "点击画面上的一个像素，读它在这一帧中的故事。",
+      pickAPixel: (touch) => (touch ? "轻点" : "点击") + "画面上的一个像素，读它在这一帧中的故事。",
       told: (x, y) =>
         "像素 " + x + "," + y + "（可以再点一个，或拖动画面环绕旋转）。在你的机器上：在上面的命令行末尾加上 --pixel " +
         x + "," + y + "。",
@@ -81,6 +95,14 @@
       copied: "已复制",
       selectToCopy: "请选中这一行来复制",
       same: "在你的机器上运行：",
+      noBackend: (lesson, why) =>
+        "此浏览器既不能运行 WebGPU，也不能运行 WebGL2（" + why + "），所以本课无法在这里运行：" +
+        "下面的插图就是它的画面。能在页面中运行本书各课的浏览器：WebGPU 需要 Chrome 和 Edge 113 及以上、" +
+        "Firefox 141 及以上、Safari 26 及以上；WebGL2 则 Chrome 56、Firefox 51、Safari 15 以来的浏览器都有；" +
+        "都要打开硬件加速（Chrome：设置 → 系统；在 Linux 上，WebGPU 要在 chrome://flags/#enable-unsafe-webgpu 中打开）。" +
+        "也可以在你的机器上运行：cargo run -p " + lesson,
+      lost: (why) => "GPU 丢失了（" + why + "）：本课已停止。",
+      runAgain: "▶ 重新运行",
     },
   };
   const words = WORDS[document.documentElement.lang] || WORDS.en;
@@ -111,7 +133,10 @@
     if (!module) {
       const url = (file) => new URL(root + "live/" + file, document.baseURI).href;
       module = import(url("workbook_web.js")).then(async (bindings) => {
-        await bindings.default({ module_or_path: url("workbook_web_bg.wasm") });
+        // The module's memory and its Rust heap (`heap_bytes`), which the tests watch over a long
+        // session.
+        live.wasm = await bindings.default({ module_or_path: url("workbook_web_bg.wasm") });
+        live.bindings = bindings;
         return bindings;
       });
     }
@@ -142,6 +167,42 @@
     };
   }
 
+  // The WebGPU device a lesson starts with, kept for its `lost` promise: the page learns of a lost
+  // GPU (a reset, a driver's update, a tab put away on a phone) only from it. The device is made
+  // inside wgpu (`requestDevice`), so the one made while a lesson starts is caught on its way out.
+  function catchDevices() {
+    if (typeof GPUAdapter === "undefined" || GPUAdapter.prototype.requestDevice.workbook) return;
+    const request = GPUAdapter.prototype.requestDevice;
+    GPUAdapter.prototype.requestDevice = async function (descriptor) {
+      const device = await request.call(this, descriptor);
+      if (live.starting) live.starting.device = device;
+      return device;
+    };
+    GPUAdapter.prototype.requestDevice.workbook = true;
+  }
+
+  // The backends this browser has, by name: WebGPU where it gives an adapter, WebGL2 where a canvas
+  // gives its context.
+  async function backendsHere() {
+    const found = [];
+    try {
+      if (navigator.gpu && (await navigator.gpu.requestAdapter())) found.push("WebGPU");
+    } catch (error) {
+      // none
+    }
+    try {
+      if (document.createElement("canvas").getContext("webgl2")) found.push("WebGL2");
+    } catch (error) {
+      // none
+    }
+    return found;
+  }
+
+  // Whether the reader's pointer is a finger (the page then says "tap", not "click").
+  function onATouchScreen() {
+    return window.matchMedia("(pointer: coarse)").matches;
+  }
+
   function wanted_backend() {
     return new URLSearchParams(window.location.search).get("backend") || "any";
   }
@@ -155,32 +216,41 @@
     canvas.setAttribute("tabindex", "0");
     const cross = element("div", { class: "live-cross", hidden: "" });
     const view = element("div", { class: "live-view" }, [canvas, cross]);
+    const starting = (live.starting = {});
     let page;
     try {
       const bindings = await loadModule();
       passOcclusionQueriesOn();
+      catchDevices();
       container.prepend(view);
       page = await bindings.start(canvas, lesson, root + "live/assets", wanted_backend());
       page.draw();
     } catch (error) {
       view.remove();
-      status.textContent = words.cannot(String(error.message || error));
+      const why = String(error.message || error);
+      const here = await backendsHere();
+      status.textContent = here.length ? words.cannot(why) : words.noBackend(lesson, why);
       status.dataset.failed = "";
-      live[lesson] = { error: String(error.message || error) };
+      live[lesson] = { error: why, backends: here };
       return;
+    } finally {
+      live.starting = null;
     }
     const firstFrame = (performance.now() - started) / 1000;
     const info = JSON.parse(page.describe());
     const adapter = (await adapterName(info)) || words.anAdapter;
     status.textContent = words.running(info.backend, adapter, firstFrame.toFixed(2));
     // `telling`: the promise of a pixel's story being read; the lesson is busy until it is.
+    // `lost`: why the GPU was lost, once it is; nothing is drawn or told after.
     const state = { page, dirty: false, firstFrame, controls: null, telling: null, pixel: null };
+    state.device = starting.device || null;
     const redraw = () => {
-      if (!state.dirty) {
+      if (!state.dirty && !state.lost) {
         state.dirty = true;
         requestAnimationFrame(function frame() {
           if (state.telling) return void state.telling.then(() => requestAnimationFrame(frame));
           state.dirty = false;
+          if (state.lost) return;
           try {
             page.draw();
           } catch (error) {
@@ -192,7 +262,7 @@
     state.redraw = redraw;
     const controls = element("div", { class: "live-controls" });
     const story = element("div", { class: "live-story" }, [
-      element("p", { text: words.pickAPixel }),
+      element("p", { text: words.pickAPixel(onATouchScreen()) }),
     ]);
     container.append(controls, story);
     state.story = story;
@@ -200,6 +270,7 @@
     // A change waits while a story is read (the lesson is busy), then is made.
     const whenFree = (work) => (state.telling ? state.telling.then(() => whenFree(work)) : work());
     const refresh = () => {
+      if (state.lost) return;
       build(controls, page, status, redraw, refresh, whenFree);
       if (state.pixel) state.tell();
     };
@@ -207,8 +278,42 @@
     state.refresh = refresh;
     build(controls, page, status, redraw, refresh, whenFree);
     orbitWithThePointer(canvas, state);
+    whenLost(container, state, status, [view, controls, story]);
     // Last: the tests wait for this, and then find the page complete.
     live[lesson] = state;
+  }
+
+  // A lost GPU stops the lesson: the status line says why, and its button starts the lesson again
+  // on a new canvas (a lost WebGL2 context stays lost on its own) with a new device. The old
+  // lesson is freed once no pixel's story holds it.
+  function whenLost(container, state, status, shown) {
+    const lesson = container.dataset.lesson;
+    const lost = (why) => {
+      if (state.lost) return;
+      state.lost = why || "?";
+      live[lesson] = { lost: state.lost };
+      const again = element("button", { type: "button", class: "live-run", text: words.runAgain });
+      status.replaceChildren(words.lost(state.lost), again);
+      status.dataset.lost = "";
+      again.addEventListener(
+        "click",
+        () => {
+          const restart = () => {
+            shown.forEach((node) => node.remove());
+            state.page.free();
+            run(container, status);
+          };
+          if (state.telling) state.telling.then(restart);
+          else restart();
+        },
+        { once: true },
+      );
+    };
+    if (state.device) state.device.lost.then((info) => lost(info.message || info.reason));
+    const canvas = shown[0].querySelector("canvas");
+    // Not `preventDefault()`: that would ask the browser for the context back, on a canvas that
+    // wgpu's objects no longer fit; the lesson starts again on a new one instead.
+    canvas.addEventListener("webglcontextlost", () => lost("WebGL2: webglcontextlost"));
   }
 
   // WebGPU keeps the adapter's description to itself in most browsers; its vendor and architecture
@@ -281,6 +386,7 @@
       }
       pinch = null;
       if (dragged < 3 && event.type === "pointerup") {
+        state.touched = event.pointerType === "touch";
         const box = canvas.getBoundingClientRect();
         const x = Math.floor((event.clientX - box.left) * scale());
         const y = Math.floor((event.clientY - box.top) * (canvas.height / box.height));
@@ -315,6 +421,7 @@
   // Reads the picked pixel's story (again: after every change) and shows it under the controls,
   // the pixel marked with a cross. A story asked for while one is read waits for it.
   function tell(state, canvas, cross, story) {
+    if (state.lost) return Promise.resolve("error: " + state.lost);
     if (state.telling) {
       state.again = true;
       return state.telling;
@@ -328,7 +435,7 @@
       (text) => {
         const pre = element("pre", { class: "live-story-text", text });
         story.replaceChildren(
-          element("p", { text: words.told(x, y) }),
+          element("p", { text: words.told(x, y, state.touched) }),
           pre,
         );
         return text;

@@ -200,6 +200,35 @@ impl WebBrowser {
     }
 
     fn open_in(&self, tab: Arc<Tab>, site: &str, lesson: &str) -> Result<LivePage> {
+        let mut page = self.run_in(tab, site, lesson)?;
+        let started = page.started()?;
+        page.first_frame = match started.strip_prefix("first frame ") {
+            Some(seconds) => seconds.parse::<f64>().unwrap_or(f64::NAN),
+            None => bail!("{lesson} on {}: {started}", self.backend.shown()),
+        };
+        Ok(page)
+    }
+
+    /// Opens `lesson`'s page with `before` run in it ahead of the page's own scripts (to take
+    /// away what the browser has), clicks "Run", and returns what the status line says once the
+    /// lesson has failed to start (an error if it started).
+    pub fn open_failing(&self, site: &str, lesson: &str, before: &str) -> Result<String> {
+        use headless_chrome::protocol::cdp::Page;
+        let tab = self.browser.new_tab().map_err(|e| anyhow!("no tab: {e}"))?;
+        let script: Page::AddScriptToEvaluateOnNewDocument =
+            serde_json::from_value(serde_json::json!({ "source": before }))?;
+        tab.call_method(script)
+            .map_err(|e| anyhow!("cannot add a script to the page: {e}"))?;
+        let page = self.run_in(tab, site, lesson)?;
+        let started = page.started()?;
+        if !started.starts_with("error: ") {
+            bail!("{lesson} started where it should have failed: {started}");
+        }
+        page.status()
+    }
+
+    /// Opens `lesson`'s page of the book at `site` in `tab` and clicks "Run".
+    fn run_in(&self, tab: Arc<Tab>, site: &str, lesson: &str) -> Result<LivePage> {
         tab.set_default_timeout(Duration::from_secs(120));
         let url = format!("{site}/{lesson}.html?backend={}", self.backend.name());
         tab.navigate_to(&url)
@@ -218,27 +247,23 @@ impl WebBrowser {
         if clicked != "ok" {
             bail!("{lesson}: {clicked}");
         }
-        let started = page.evaluate(&format!(
-            "new Promise((resolve) => {{
-                 const t0 = performance.now();
-                 (function poll() {{
-                     const s = (window.workbookLive || {{}})['{lesson}'];
-                     if (s && s.error) resolve('error: ' + s.error);
-                     else if (s && s.page) resolve('first frame ' + s.firstFrame);
-                     else if (performance.now() - t0 > 100000) resolve('error: no first frame in 100 s');
-                     else setTimeout(poll, 20);
-                 }})();
-             }})"
-        ))?;
-        let first_frame = match started.strip_prefix("first frame ") {
-            Some(seconds) => seconds.parse::<f64>().unwrap_or(f64::NAN),
-            None => bail!("{lesson} on {}: {started}", self.backend.shown()),
-        };
-        Ok(LivePage {
-            first_frame,
-            ..page
-        })
+        Ok(page)
     }
+}
+
+/// What a page holds in memory.
+#[derive(Debug, Clone, Copy)]
+pub struct PageMemory {
+    /// The JavaScript heap's live bytes (V8's; the DOM's nodes are counted apart).
+    pub js_heap: u64,
+    /// The DOM's nodes alive, in the page and detached but held.
+    pub dom_nodes: u64,
+    /// The JavaScript event listeners registered.
+    pub listeners: u64,
+    /// The bytes live on the module's Rust heap (its counting allocator's).
+    pub rust_heap: u64,
+    /// The WebAssembly module's memory in bytes (it only grows, by 64 KiB pages).
+    pub wasm: u64,
 }
 
 /// A lesson running in its page.
@@ -554,6 +579,186 @@ impl LivePage {
              }})",
             self.state()
         ))
+    }
+
+    /// Waits for the lesson clicked to run: `first frame SECONDS` once it has drawn its first
+    /// frame, or `error: WHY`.
+    fn started(&self) -> Result<String> {
+        self.evaluate(&format!(
+            "new Promise((resolve) => {{
+                 const t0 = performance.now();
+                 (function poll() {{
+                     const s = {};
+                     if (s && s.error) resolve('error: ' + s.error);
+                     else if (s && s.page) resolve('first frame ' + s.firstFrame);
+                     else if (performance.now() - t0 > 100000) resolve('error: no first frame in 100 s');
+                     else setTimeout(poll, 20);
+                 }})();
+             }})",
+            self.state()
+        ))
+    }
+
+    /// Loses the lesson's GPU as a reset would: the WebGPU device destroyed, or the WebGL2
+    /// context lost (`WEBGL_lose_context`). Returns what the status line says then.
+    pub fn lose_the_gpu(&self) -> Result<String> {
+        let said = self.evaluate(&format!(
+            "new Promise((resolve) => {{
+                 const state = {state};
+                 const canvas = document.querySelector('div.live[data-lesson=\"{lesson}\"] canvas');
+                 if (state.device) state.device.destroy();
+                 else canvas.getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
+                 const status = document.querySelector('div.live[data-lesson=\"{lesson}\"] p.live-status');
+                 const t0 = performance.now();
+                 (function poll() {{
+                     if ('lost' in status.dataset) resolve(status.textContent);
+                     else if (performance.now() - t0 > 10000) resolve('error: the page did not notice in 10 s: ' + status.textContent);
+                     else setTimeout(poll, 20);
+                 }})();
+             }})",
+            state = self.state(),
+            lesson = self.lesson
+        ))?;
+        if said.starts_with("error: ") {
+            bail!("{}: {said}", self.lesson);
+        }
+        Ok(said)
+    }
+
+    /// Clicks the status line's "Run again" after a lost GPU, and waits for the lesson's first
+    /// frame.
+    pub fn run_again(&mut self) -> Result<()> {
+        let clicked = self.evaluate(&format!(
+            "(() => {{ const again = document.querySelector('div.live[data-lesson=\"{}\"] p.live-status button.live-run');
+                 if (!again) return 'no Run again button';
+                 again.click(); return 'ok'; }})()",
+            self.lesson
+        ))?;
+        if clicked != "ok" {
+            bail!("{}: {clicked}", self.lesson);
+        }
+        let started = self.started()?;
+        match started.strip_prefix("first frame ") {
+            Some(seconds) => self.first_frame = seconds.parse::<f64>().unwrap_or(f64::NAN),
+            None => bail!("{} did not start again: {started}", self.lesson),
+        }
+        Ok(())
+    }
+
+    /// The page's memory, after a garbage collection (see [`PageMemory`]).
+    pub fn memory(&self) -> Result<PageMemory> {
+        use headless_chrome::protocol::cdp::{HeapProfiler, Memory, Runtime};
+        self.tab
+            .call_method(HeapProfiler::CollectGarbage(None))
+            .map_err(|e| anyhow!("no garbage collection: {e}"))?;
+        let heap = (self.tab)
+            .call_method(Runtime::GetHeapUsage(None))
+            .map_err(|e| anyhow!("no heap usage: {e}"))?;
+        let dom = (self.tab)
+            .call_method(Memory::GetDOMCounters(None))
+            .map_err(|e| anyhow!("no DOM counters: {e}"))?;
+        let module = self.evaluate(
+            "(() => { const live = window.workbookLive;
+                 return live.bindings.heap_bytes() + ',' + live.wasm.memory.buffer.byteLength; })()",
+        )?;
+        let Some((Ok(rust_heap), Ok(wasm))) = module
+            .split_once(',')
+            .map(|(heap, wasm)| (heap.parse::<u64>(), wasm.parse::<u64>()))
+        else {
+            bail!("the module's heap and memory are `{module}`");
+        };
+        Ok(PageMemory {
+            js_heap: heap.used_size as u64,
+            dom_nodes: u64::from(dom.nodes),
+            listeners: u64::from(dom.js_event_listeners),
+            rust_heap,
+            wasm,
+        })
+    }
+
+    /// A screenshot of the viewport as a phone's screen shows it, one pixel a point (the phone
+    /// draws three), the lesson's block scrolled to the top.
+    pub fn phone_screenshot(&self) -> Result<Vec<u8>> {
+        let rect = self.evaluate(&format!(
+            "(() => {{ const block = document.querySelector('div.live[data-lesson=\"{}\"]');
+                 block.scrollIntoView();
+                 return [window.scrollX, window.scrollY, window.innerWidth, window.innerHeight].join(','); }})()",
+            self.lesson
+        ))?;
+        let rect: Vec<f64> = rect.split(',').filter_map(|n| n.parse().ok()).collect();
+        let [x, y, width, height] = rect[..] else {
+            bail!("no viewport: {rect:?}");
+        };
+        let clip = headless_chrome::protocol::cdp::Page::Viewport {
+            x,
+            y,
+            width,
+            height,
+            scale: 1.0 / 3.0,
+        };
+        screenshot_of(&self.tab, Some(clip))
+    }
+
+    /// Turns the lesson's first knob that has another value than its default to that value,
+    /// through its select; the knob and the value.
+    pub fn a_knob_away_from_its_default(&self) -> Result<(String, String)> {
+        let found = self.evaluate(&format!(
+            "(() => {{ const info = JSON.parse({}.page.describe());
+                 const other = (k) => k.values.find((v) => v !== k.default && !k.unavailable[v]);
+                 const knob = info.knobs.find(other);
+                 return knob ? knob.name + '=' + other(knob) : ''; }})()",
+            self.state()
+        ))?;
+        let Some((name, value)) = found.split_once('=') else {
+            bail!(
+                "{}: no knob with another value than its default",
+                self.lesson
+            );
+        };
+        self.set_knob(name, value)?;
+        Ok((name.to_string(), value.to_string()))
+    }
+
+    /// Gives the canvas a new size in pixels, as a page whose layout changed does.
+    pub fn resize(&self, width: u32, height: u32) -> Result<()> {
+        let done = self.evaluate(&format!(
+            "(() => {{ const state = {state};
+                 const canvas = document.querySelector('div.live[data-lesson=\"{lesson}\"] canvas');
+                 canvas.width = {width}; canvas.height = {height};
+                 try {{ state.page.resize({width}, {height}); state.page.draw(); return 'ok'; }}
+                 catch (e) {{ return 'error: ' + (e.message || e); }} }})()",
+            state = self.state(),
+            lesson = self.lesson
+        ))?;
+        if done != "ok" {
+            bail!("{}: {done}", self.lesson);
+        }
+        Ok(())
+    }
+
+    /// Draws `frames` frames as a reader's drag does: the camera orbits a little before each, and
+    /// every tenth frame the controls are made again (as when a drag ends); the page's tasks run
+    /// in between.
+    pub fn draw_frames(&self, frames: u64) -> Result<()> {
+        let done = self.evaluate(&format!(
+            "(async () => {{ const state = {};
+                 try {{
+                     for (let i = 1; i <= {frames}; i++) {{
+                         state.page.orbit(2, 0);
+                         state.page.draw();
+                         if (i % 10 === 0) {{
+                             state.refresh();
+                             await new Promise((resolve) => setTimeout(resolve, 0));
+                         }}
+                     }}
+                     return 'ok';
+                 }} catch (e) {{ return 'error: ' + (e.message || e); }} }})()",
+            self.state()
+        ))?;
+        if done != "ok" {
+            bail!("{}: {done}", self.lesson);
+        }
+        Ok(())
     }
 
     /// The status line (backend and adapter, or an error).

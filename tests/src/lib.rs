@@ -11,6 +11,7 @@ pub mod pairs;
 pub mod shots;
 pub mod stories;
 pub mod strips;
+pub mod trend;
 pub mod web;
 
 use std::path::PathBuf;

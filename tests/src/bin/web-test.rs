@@ -21,6 +21,17 @@
 //!   clicked on WebGPU tells the story `--pixel` tells natively (the same steps, draws and test
 //!   outcomes; the measured colours and depths left out), and on WebGL2 the page says why not.
 //!
+//! - the first lesson's page in Chinese speaks Chinese (no word of the page's own in English), and
+//!   on a phone's screen (390×844, touch) a finger orbits, a pinch zooms and a tap tells a story;
+//! - a lost GPU (the WebGPU device destroyed, the WebGL2 context lost): the page says so, and its
+//!   "Run again" draws the book's picture again;
+//! - a browser with neither backend (both taken away before the page's scripts run): the page says
+//!   so in English and in Chinese, naming the browsers that work and the native command.
+//!
+//! `--soak [FRAMES]` runs a long session instead (10,000 frames unless given; see [`soak`]), and
+//! `--page-screenshot`, `--phone-screenshot` and `--story-screenshot` make the book's pictures of
+//! the web edition.
+//!
 //! Two kinds of the book's pictures are not tried on the page at all, on either backend; the run
 //! names them:
 //!
@@ -39,10 +50,11 @@ use std::process::ExitCode;
 
 use anyhow::{Context, Result, bail};
 use workbook::book::shots::{self as book_shots, BookShot, Setting};
-use workbook_tests::browser::{self, LivePage, WebBackend, WebBrowser};
+use workbook_tests::browser::{self, LivePage, PageMemory, WebBackend, WebBrowser};
 use workbook_tests::flip::{self, Comparison, Threshold};
 use workbook_tests::shots::{ForLesson, LESSONS, PAIRS, for_lesson};
 use workbook_tests::stories::{self, BookStory, STORIES};
+use workbook_tests::trend::trend;
 use workbook_tests::workspace;
 
 /// The limit a page's picture must meet against the book's. The book's pictures are drawn by
@@ -98,30 +110,52 @@ impl Outcome {
 enum Request {
     /// The pages of these lessons tested (every lesson's, when none is named).
     Lessons(Vec<&'static str>),
-    PageScreenshot(PathBuf),
+    /// A screenshot of a page for the book, in a language (`en` or a translation's).
+    PageScreenshot(PathBuf, String),
     StoryScreenshot(PathBuf),
+    PhoneScreenshot(PathBuf, String),
+    /// A long session: this many frames in a page, its memory measured.
+    Soak(u64),
 }
 
-/// Reads the command line: lesson names, each one of [`LESSONS`], or `--page-screenshot FILE` or
-/// `--story-screenshot FILE`.
+/// The usage of the options.
+const USAGE: &str = "give lesson names, or --page-screenshot FILE [LANGUAGE], \
+    --phone-screenshot FILE [LANGUAGE], --story-screenshot FILE or --soak [FRAMES]";
+
+/// Reads the command line: lesson names, each one of [`LESSONS`], or one of the options of
+/// [`USAGE`] (a language is `en` or a translation's, e.g. `zh-CN`; `en` when none is given).
 fn request(arguments: &[String]) -> Result<Request> {
-    match arguments.first().map(String::as_str) {
-        Some("--page-screenshot") => {
-            let path = arguments.get(1).context("--page-screenshot FILE")?;
-            return Ok(Request::PageScreenshot(path.into()));
+    let file = || -> Result<PathBuf> {
+        let path = arguments
+            .get(1)
+            .with_context(|| format!("{}: {USAGE}", arguments[0]))?;
+        Ok(path.into())
+    };
+    let language = || -> Result<String> {
+        let language = arguments.get(2).map_or("en", String::as_str);
+        if language != "en" && !book_language(language) {
+            bail!("no language `{language}` in the book: en, or one of book/po/*.po");
         }
-        Some("--story-screenshot") => {
-            let path = arguments.get(1).context("--story-screenshot FILE")?;
-            return Ok(Request::StoryScreenshot(path.into()));
+        Ok(language.to_string())
+    };
+    match arguments.first().map(String::as_str) {
+        Some("--page-screenshot") => return Ok(Request::PageScreenshot(file()?, language()?)),
+        Some("--phone-screenshot") => return Ok(Request::PhoneScreenshot(file()?, language()?)),
+        Some("--story-screenshot") => return Ok(Request::StoryScreenshot(file()?)),
+        Some("--soak") => {
+            let frames = arguments.get(1).map_or(Ok(SOAK_FRAMES), |n| n.parse());
+            let frames = frames.context("--soak FRAMES: a number of frames")?;
+            if frames < 4 * SOAK_EVERY {
+                bail!("--soak {frames}: at least {} frames", 4 * SOAK_EVERY);
+            }
+            return Ok(Request::Soak(frames));
         }
         _ => {}
     }
     let mut named = Vec::new();
     for name in arguments {
         if name.starts_with('-') {
-            bail!(
-                "unknown option `{name}`: give lesson names, or --page-screenshot FILE, or --story-screenshot FILE"
-            );
+            bail!("unknown option `{name}`: {USAGE}");
         }
         let Some(lesson) = LESSONS.iter().find(|lesson| *lesson == name) else {
             bail!("no lesson `{name}`: the lessons are {}", LESSONS.join(", "));
@@ -155,8 +189,14 @@ fn run() -> Result<bool> {
     let site = browser::serve(&site_root)?;
     println!("web-test: serving {} at {site}", site_root.display());
     let lessons = match request {
-        Request::PageScreenshot(path) => return page_screenshot(&site, &path).map(|()| true),
+        Request::PageScreenshot(path, language) => {
+            return page_screenshot(&site, &path, &language).map(|()| true);
+        }
+        Request::PhoneScreenshot(path, language) => {
+            return phone_screenshot(&site, &path, &language).map(|()| true);
+        }
         Request::StoryScreenshot(path) => return story_screenshot(&site, &path).map(|()| true),
+        Request::Soak(frames) => return soak(&site, frames, &out),
         Request::Lessons(lessons) => lessons,
     };
     let mut outcome = Outcome {
@@ -175,18 +215,7 @@ fn run() -> Result<bool> {
             }
         }
         let lesson = lessons.first().context("no lesson to test")?;
-        if let Err(error) = test_chinese_page(&browser, &site, lesson, &out) {
-            outcome.failures.push(format!(
-                "{lesson}'s Chinese page on {}: {error:#}",
-                backend.shown()
-            ));
-        }
-        if let Err(error) = test_phone(&browser, &site, lesson, &out) {
-            let on = backend.shown();
-            outcome
-                .failures
-                .push(format!("{lesson} on a phone, {on}: {error:#}"));
-        }
+        test_the_page_itself(&browser, &site, lesson, &out, &mut outcome);
     }
     let selected: Vec<&BookShot> = shots
         .iter()
@@ -203,6 +232,33 @@ fn run() -> Result<bool> {
             eprintln!("  {failure}");
         }
         Ok(false)
+    }
+}
+
+/// What the page does beside drawing the book's pictures, on one lesson's page and `browser`'s
+/// backend: its Chinese, a phone, a lost GPU, and (on WebGPU's browser) a browser with neither
+/// backend. Failures go to `outcome`.
+fn test_the_page_itself(
+    browser: &WebBrowser,
+    site: &str,
+    lesson: &str,
+    out: &Path,
+    outcome: &mut Outcome,
+) {
+    let on = browser.backend.shown();
+    if let Err(error) = test_chinese_page(browser, site, lesson, out) {
+        (outcome.failures).push(format!("{lesson}'s Chinese page on {on}: {error:#}"));
+    }
+    if let Err(error) = test_phone(browser, site, lesson, out) {
+        (outcome.failures).push(format!("{lesson} on a phone, {on}: {error:#}"));
+    }
+    if let Err(error) = test_lost_gpu(browser, site, lesson, out, outcome) {
+        (outcome.failures).push(format!("{lesson} after a lost GPU, {on}: {error:#}"));
+    }
+    if browser.backend == WebBackend::WebGpu
+        && let Err(error) = test_no_backend(browser, site, lesson)
+    {
+        (outcome.failures).push(format!("{lesson} with no backend: {error:#}"));
     }
 }
 
@@ -354,12 +410,26 @@ fn not_the_pages(shot: &BookShot) -> Result<Option<String>> {
     Ok(None)
 }
 
-/// The book's picture of the web edition (`cargo web-test --page-screenshot FILE`): lesson 4's page
-/// on WebGPU, seen from behind the wall with its stencil test turned off through the knob's
-/// select: the wrong picture the lesson fixes, and the controls that made it.
-fn page_screenshot(site: &str, path: &Path) -> Result<()> {
+/// Whether `language` is one of the book's translations (`book/po/<language>.po`).
+fn book_language(language: &str) -> bool {
+    workspace().join(format!("book/po/{language}.po")).is_file()
+}
+
+/// The book's site in `language`: its root in English, a translation's folder.
+fn site_in(site: &str, language: &str) -> String {
+    match language {
+        "en" => site.to_string(),
+        _ => format!("{site}/{language}"),
+    }
+}
+
+/// The book's picture of the web edition (`cargo web-test --page-screenshot FILE [LANGUAGE]`):
+/// lesson 4's page in the book's LANGUAGE, on WebGPU, seen from behind the wall with its stencil
+/// test turned off through the knob's select: the wrong picture the lesson fixes, and the
+/// controls that made it.
+fn page_screenshot(site: &str, path: &Path, language: &str) -> Result<()> {
     let browser = WebBrowser::launch(WebBackend::WebGpu)?;
-    let page = browser.open(site, "reflect-skull")?;
+    let page = browser.open(&site_in(site, language), "reflect-skull")?;
     page.set_knob("stencil", "off")?;
     page.set_camera("140,12,10")?;
     page.capture()?;
@@ -371,6 +441,204 @@ fn page_screenshot(site: &str, path: &Path) -> Result<()> {
 
 /// The book's picture of a pixel's story in the page (`cargo web-test --story-screenshot FILE`):
 /// lesson 3's page on WebGPU, a pixel of the mirror clicked (the book's story pixel).
+/// A lost GPU (the WebGPU device destroyed, the WebGL2 context lost, as a reset does): the page
+/// says so in its status line, and its "Run again" starts the lesson afresh, drawing the book's
+/// picture again (a knob turned before the loss is back at its default, as on a first start).
+fn test_lost_gpu(
+    browser: &WebBrowser,
+    site: &str,
+    lesson: &str,
+    out: &Path,
+    outcome: &mut Outcome,
+) -> Result<()> {
+    let backend = browser.backend;
+    let mut page = browser.open(site, lesson)?;
+    let (knob, value) = page.a_knob_away_from_its_default()?;
+    let said = page.lose_the_gpu()?;
+    if !said.starts_with("The GPU was lost") {
+        bail!("the status line after the loss says `{said}`");
+    }
+    page.run_again()?;
+    let status = page.status()?;
+    if !status.starts_with(&format!("{} on ", backend.shown())) {
+        bail!("after Run again the page says `{status}`");
+    }
+    let picture = page.capture()?;
+    let reference = flip::load(&images().join(format!("{lesson}.png")))?;
+    let comparison = flip::compare(&reference, &picture)?;
+    outcome.record(
+        backend,
+        &format!("{lesson}-after-a-lost-gpu"),
+        lesson,
+        &comparison,
+    );
+    let on = backend.name();
+    println!(
+        "  {on:7} {lesson}: GPU lost (`{said}`, {knob}={value} set before), run again in {:.2} s: {}",
+        page.first_frame,
+        comparison.summary()
+    );
+    if !comparison.passes(WEB) {
+        let stem = out.join(format!("{lesson}-after-a-lost-gpu-{on}"));
+        picture.save(with_suffix(&stem, "-actual.png"))?;
+        (comparison.difference).save(with_suffix(&stem, "-difference.png"))?;
+        bail!(
+            "run again, the page does not draw the book's {lesson}.png: {} (see {}-actual.png)",
+            comparison.summary(),
+            stem.display()
+        );
+    }
+    Ok(())
+}
+
+/// What a browser with neither WebGPU nor WebGL2 shows (both taken away before the page's scripts
+/// run): a status line in the page's language naming the browsers that work and the native
+/// command, in English and in Chinese.
+fn test_no_backend(browser: &WebBrowser, site: &str, lesson: &str) -> Result<()> {
+    const NEITHER: &str =
+        "Object.defineProperty(Navigator.prototype, 'gpu', { get: () => undefined });
+        const getContext = HTMLCanvasElement.prototype.getContext;
+        HTMLCanvasElement.prototype.getContext = function (kind, ...options) {
+            return /webgl/.test(kind) ? null : getContext.call(this, kind, ...options);
+        };";
+    let command = format!("cargo run -p {lesson}");
+    for (language, names) in [
+        (
+            "en",
+            ["Chrome", "Firefox", "Safari", "hardware acceleration"],
+        ),
+        ("zh-CN", ["Chrome", "Firefox", "Safari", "硬件加速"]),
+    ] {
+        let said = browser.open_failing(&site_in(site, language), lesson, NEITHER)?;
+        let missing: Vec<&str> = (names.iter().copied())
+            .chain([command.as_str()])
+            .filter(|name| !said.contains(name))
+            .collect();
+        if !missing.is_empty() {
+            bail!("the {language} page says `{said}`, without {missing:?}");
+        }
+        println!("  no backend, {language}: {said}");
+    }
+    Ok(())
+}
+
+/// The frames of a long session (`--soak`), and how often its memory is measured.
+const SOAK_FRAMES: u64 = 10_000;
+const SOAK_EVERY: u64 = 200;
+/// The canvas's size in a long session: what a leak keeps is by the frame, not by the pixel, and
+/// a software GPU draws a small frame quickly.
+const SOAK_SIZE: (u32, u32) = (160, 90);
+
+/// The JavaScript heap's trend allowed over a long session. Measured without a leak: see
+/// [`soak`]'s report.
+const SOAK_HEAP_LIMIT: i64 = 256 * 1024;
+
+/// The module's Rust heap's trend allowed over a long session. Measured without a leak: see
+/// [`soak`]'s report.
+const SOAK_RUST_LIMIT: i64 = 64 * 1024;
+
+/// What a long session measures: a name, the measure, the trend allowed.
+type Measure = (&'static str, fn(&PageMemory) -> u64, i64);
+
+/// The page's memory as [`soak`] judges it.
+const SOAK_MEASURES: [Measure; 5] = [
+    ("the JS heap (bytes)", |m| m.js_heap, SOAK_HEAP_LIMIT),
+    ("the DOM's nodes", |m| m.dom_nodes, 0),
+    ("the event listeners", |m| m.listeners, 0),
+    (
+        "the module's Rust heap (bytes)",
+        |m| m.rust_heap,
+        SOAK_RUST_LIMIT,
+    ),
+    ("the module's memory (bytes)", |m| m.wasm, 0),
+];
+
+/// A long session: `frames` frames of the heaviest lesson (two mirrors), the camera orbiting and
+/// the controls made again every tenth frame, as a reader's dragging does, on each backend; every
+/// [`SOAK_EVERY`] frames the page's memory is measured ([`PageMemory`], after a collection). Each
+/// measure is judged by its trend ([`trend`]): the median step between samples, times the steps,
+/// against its limit in [`SOAK_MEASURES`]: the heaps may move a little, the DOM's nodes and
+/// listeners and the module's memory not at all. Writes `soak.csv` into `out`.
+fn soak(site: &str, frames: u64, out: &Path) -> Result<bool> {
+    let mut csv = String::from(
+        "backend,frame,js_heap_bytes,dom_nodes,listeners,rust_heap_bytes,wasm_bytes\n",
+    );
+    let mut failures = Vec::new();
+    for backend in WebBackend::BOTH {
+        let on = backend.name();
+        let samples = soak_on(backend, site, frames, &mut csv)?;
+        // The first sample is the warm-up's: caches filled, pipelines made.
+        let judged = &samples[1..];
+        for (name, measure, limit) in SOAK_MEASURES {
+            let values: Vec<i64> = judged.iter().map(|m| measure(m) as i64).collect();
+            let (growth, largest) = trend(&values);
+            println!("  {on:7} {name}: trend {growth} (largest step {largest}), limit {limit}");
+            if growth > limit {
+                failures.push(format!(
+                    "{on}: {name} grows by {growth} over {frames} frames (limit {limit}); see {}",
+                    out.join("soak.csv").display()
+                ));
+            }
+        }
+    }
+    std::fs::write(out.join("soak.csv"), csv)?;
+    for failure in &failures {
+        eprintln!("web-test --soak: {failure}");
+    }
+    Ok(failures.is_empty())
+}
+
+/// [`soak`]'s session on one backend: the samples, also written as lines of `csv`.
+fn soak_on(
+    backend: WebBackend,
+    site: &str,
+    frames: u64,
+    csv: &mut String,
+) -> Result<Vec<PageMemory>> {
+    let browser = WebBrowser::launch(backend)?;
+    let page = browser.open(site, "two-mirrors")?;
+    page.resize(SOAK_SIZE.0, SOAK_SIZE.1)?;
+    let on = backend.name();
+    let mut samples = Vec::new();
+    let started = std::time::Instant::now();
+    for frame in (SOAK_EVERY..=frames).step_by(SOAK_EVERY as usize) {
+        page.draw_frames(SOAK_EVERY)?;
+        let m = page.memory()?;
+        let (heap, nodes, listeners, rust, wasm) =
+            (m.js_heap, m.dom_nodes, m.listeners, m.rust_heap, m.wasm);
+        let _ = writeln!(csv, "{on},{frame},{heap},{nodes},{listeners},{rust},{wasm}");
+        if [1000, 5000, 10_000, frames].contains(&frame) {
+            let mib = |bytes: u64| bytes as f64 / 1048576.0;
+            println!(
+                "  {on:7} frame {frame:6}: JS heap {:.3} MiB, {nodes} DOM nodes, {listeners} \
+                 listeners, Rust heap {:.3} MiB, module's memory {:.2} MiB",
+                mib(heap),
+                mib(rust),
+                mib(wasm)
+            );
+        }
+        samples.push(m);
+    }
+    let seconds = started.elapsed().as_secs_f64();
+    println!(
+        "  {on:7} {frames} frames in {seconds:.0} s ({:.1} ms a frame)",
+        seconds * 1000.0 / frames as f64
+    );
+    Ok(samples)
+}
+
+/// Lesson 3's page on a phone, a tap on the mirror told as its story.
+fn phone_screenshot(site: &str, path: &Path, language: &str) -> Result<()> {
+    let browser = WebBrowser::launch(WebBackend::WebGpu)?;
+    let page = browser.open_on_a_phone(&site_in(site, language), "mark-mirror")?;
+    let ((x, y), width) = page.canvas_on_screen()?;
+    page.tap((x, y - width / 12.0))?;
+    let png = page.phone_screenshot()?;
+    std::fs::write(path, png).with_context(|| format!("cannot write {}", path.display()))?;
+    println!("web-test: wrote {}", path.display());
+    Ok(())
+}
+
 fn story_screenshot(site: &str, path: &Path) -> Result<()> {
     let browser = WebBrowser::launch(WebBackend::WebGpu)?;
     let page = browser.open(site, "mark-mirror")?;
@@ -473,6 +741,13 @@ fn test_phone(browser: &WebBrowser, site: &str, lesson: &str, out: &Path) -> Res
     let story = told.starts_with("Pixel (") || (on == "webgl2" && told.starts_with("No story"));
     if !story {
         bail!("a tap on the canvas told no story: `{told}`");
+    }
+    // A finger taps: the page says so, not "click".
+    let said = page.evaluate(&format!(
+        "window.workbookLive['{lesson}'].story.querySelector('p').textContent"
+    ))?;
+    if on == "webgpu" && !said.contains("(tap another") {
+        bail!("after a tap the page says `{said}`, not to tap another pixel");
     }
     let path = out.join(format!("{lesson}-phone-{on}.png"));
     std::fs::write(&path, page.screenshot(false)?)?;

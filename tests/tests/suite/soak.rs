@@ -39,6 +39,7 @@ use std::process::Command;
 use lessons::two_mirrors;
 use workbook::app::headless::{Headless, Request};
 use workbook::wgpu;
+use workbook_tests::trend::trend;
 
 /// Frames between two samples.
 const EVERY: u64 = 100;
@@ -202,17 +203,6 @@ fn judge(line: &str) -> Vec<String> {
         }
     }
     errors
-}
-
-/// The growth a steady leak gives `samples`: the median step from one sample to the next, times
-/// the number of steps; and the largest single step, for the report. The median is the upper one
-/// of an even count.
-fn trend(samples: &[i64]) -> (i64, i64) {
-    let mut steps: Vec<i64> = samples.windows(2).map(|w| w[1] - w[0]).collect();
-    steps.sort_unstable();
-    let median = steps.get(steps.len() / 2).copied().unwrap_or(0);
-    let largest = steps.last().copied().unwrap_or(0);
-    (median * steps.len() as i64, largest)
 }
 
 /// The trend against the samples CI met: a 34 MiB block taken for one sample beside a leak of
