@@ -69,9 +69,9 @@ fn catalogued(name: &str) -> bool {
             .any(|pair| pair.zoom_name() == name || pair.difference_name() == name)
 }
 
-/// The book's pictures of the web edition, and the commands that make them: a lesson's page, and a
-/// pixel's story in a page.
-pub const WEB_PAGE_SHOTS: [(&str, &str); 2] = [
+/// The book's pictures of the web edition, and the commands that make them: a lesson's page (in
+/// English and in Chinese), a pixel's story in a page, and a page on a phone in both languages.
+pub const WEB_PAGE_SHOTS: [(&str, &str); 5] = [
     (
         "images/web/reflect-skull-page.png",
         "cargo web-test --page-screenshot book/src/images/web/reflect-skull-page.png",
@@ -79,6 +79,18 @@ pub const WEB_PAGE_SHOTS: [(&str, &str); 2] = [
     (
         "images/web/mark-mirror-page-story.png",
         "cargo web-test --story-screenshot book/src/images/web/mark-mirror-page-story.png",
+    ),
+    (
+        "images/web/reflect-skull-page-zh-CN.png",
+        "cargo web-test --page-screenshot book/src/images/web/reflect-skull-page-zh-CN.png zh-CN",
+    ),
+    (
+        "images/web/mark-mirror-phone.png",
+        "cargo web-test --phone-screenshot book/src/images/web/mark-mirror-phone.png",
+    ),
+    (
+        "images/web/mark-mirror-phone-zh-CN.png",
+        "cargo web-test --phone-screenshot book/src/images/web/mark-mirror-phone-zh-CN.png zh-CN",
     ),
 ];
 
