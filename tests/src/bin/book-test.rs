@@ -593,8 +593,21 @@ fn search(
              book/po/cjk-search.py did not run on it"
         ));
     }
+    chinese_searches(chrome, site, &at, dir, failures)?;
+    searched_before_the_script(chrome, site, &at, failures)
+}
+
+/// Each of [`CHINESE_SEARCHES`] on the page `at`: its first result holds every word of the query,
+/// and its page is among the first results; a screenshot of the first query's results into `dir`.
+fn chinese_searches(
+    chrome: &WebBrowser,
+    site: &str,
+    at: &str,
+    dir: &Path,
+    failures: &mut Vec<String>,
+) -> Result<()> {
     for (term, page, within) in CHINESE_SEARCHES {
-        let (opened, found) = searched(chrome, site, &at, term)?;
+        let (opened, found) = searched(chrome, site, at, term)?;
         let mut fail = |what: String| failures.push(format!("{at}?search={term}: {what}"));
         let first: Vec<&str> = (found.results.iter().take(3))
             .map(|(_, url, _)| url.as_str())
@@ -623,10 +636,19 @@ fn search(
             println!("wrote {}", shot.display());
         }
     }
-    // An index loaded, and searched, before web/search.js ran (a race the page can lose when the
-    // address asks for a search): the script, run again after elasticlunr's own tokenizer and
-    // pipeline are put back and a Chinese query searched with them, searches it again.
-    let (page, _) = searched(chrome, site, &at, "stencil")?;
+    Ok(())
+}
+
+/// An index loaded, and searched, before web/search.js ran (a race the page can lose when the
+/// address asks for a search): the script, run again after elasticlunr's own tokenizer and
+/// pipeline are put back and a Chinese query searched with them, searches it again.
+fn searched_before_the_script(
+    chrome: &WebBrowser,
+    site: &str,
+    at: &str,
+    failures: &mut Vec<String>,
+) -> Result<()> {
+    let (page, _) = searched(chrome, site, at, "stencil")?;
     let late = page.evaluate(
         r"new Promise((resolve) => {
             const lunr = window.elasticlunr;
