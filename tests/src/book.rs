@@ -70,8 +70,9 @@ fn catalogued(name: &str) -> bool {
 }
 
 /// The book's pictures of the web edition, and the commands that make them: a lesson's page (in
-/// English and in Chinese), a pixel's story in a page, and a page on a phone in both languages.
-pub const WEB_PAGE_SHOTS: [(&str, &str); 5] = [
+/// English and in Chinese), a pixel's story in a page, a page on a phone in both languages, and the
+/// Chinese book's search.
+pub const WEB_PAGE_SHOTS: [(&str, &str); 6] = [
     (
         "images/web/reflect-skull-page.png",
         "cargo web-test --page-screenshot book/src/images/web/reflect-skull-page.png",
@@ -91,6 +92,10 @@ pub const WEB_PAGE_SHOTS: [(&str, &str); 5] = [
     (
         "images/web/mark-mirror-phone-zh-CN.png",
         "cargo web-test --phone-screenshot book/src/images/web/mark-mirror-phone-zh-CN.png zh-CN",
+    ),
+    (
+        "images/web/search-zh-CN.png",
+        "cargo book-test --search-screenshot book/src/images/web/search-zh-CN.png",
     ),
 ];
 

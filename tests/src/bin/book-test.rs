@@ -35,7 +35,8 @@
 //!   through elasticlunr's own (see [`ENGLISH_SEARCHES`]).
 //!
 //! `--screenshots DIR` writes the picker open on both books, and the Chinese search's results for
-//! 模板缓冲区 (`search-zh.png`) (default: `target/book-test/`).
+//! 模板缓冲区 (`search-zh.png`) (default: `target/book-test/`); `--search-screenshot FILE` writes
+//! only the latter, for the book.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -54,6 +55,9 @@ struct Args {
     /// Where to write the screenshots: the language picker, and the Chinese search's results.
     #[arg(long, value_name = "DIR")]
     screenshots: Option<PathBuf>,
+    /// Only write the book's picture of the Chinese search (its results for 模板缓冲区) to FILE.
+    #[arg(long, value_name = "FILE")]
+    search_screenshot: Option<PathBuf>,
 }
 
 /// The translations `book/build.sh` builds, with the characters their text must show (CJK).
@@ -216,6 +220,17 @@ fn run() -> Result<bool> {
     std::fs::create_dir_all(&shots)?;
     let site = browser::serve(&site_root)?;
     let chrome = WebBrowser::launch(WebBackend::WebGl2)?;
+    if let Some(file) = &args.search_screenshot {
+        let at = format!("zh-CN/{PICKER_PAGE}");
+        let (page, found) = searched(&chrome, &site, &at, CHINESE_SEARCHES[0].0)?;
+        if found.results.is_empty() {
+            bail!("{at}: no results for {}", CHINESE_SEARCHES[0].0);
+        }
+        std::fs::write(file, page.screenshot()?)
+            .with_context(|| format!("cannot write {}", file.display()))?;
+        println!("book-test: wrote {}", file.display());
+        return Ok(true);
+    }
     let mut failures = Vec::new();
     let english = (pages.iter())
         .map(|page| inspect(&chrome.page(&format!("{site}/{page}"))?))
