@@ -131,17 +131,24 @@ fn what_is_not_a_model_file_is_refused_at_once() {
         .unwrap();
     let fifo = scratch("a-fifo.obj");
     let _ = std::fs::remove_file(&fifo);
-    let made_fifo = std::process::Command::new("mkfifo")
-        .arg(&fifo)
-        .status()
-        .is_ok_and(|status| status.success());
+    // A device and a FIFO on Linux only (`/dev/zero`, `mkfifo`); a folder and a size anywhere.
+    let linux = cfg!(target_os = "linux");
+    let made_fifo = linux
+        && std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .is_ok_and(|status| status.success());
     let mut cases = vec![
-        ("/dev/zero".to_string(), "is a device, not a file"),
         (scratch("").display().to_string(), "is a folder, not a file"),
         (big.display().to_string(), "larger than 256 MiB"),
     ];
+    if linux {
+        cases.push(("/dev/zero".to_string(), "is a device, not a file"));
+    }
     if made_fifo {
         cases.push((fifo.display().to_string(), "is a FIFO (a pipe), not a file"));
+    } else if !linux {
+        eprintln!("skipped on {}: /dev/zero and mkfifo", std::env::consts::OS);
     } else {
         assert!(
             std::env::var_os("CI").is_none(),
@@ -192,6 +199,7 @@ fn a_corrupt_texture_is_refused() {
 /// root may mount: skipped with a message where it cannot be made, but not under CI.
 #[test]
 fn a_full_disk_gives_one_line_and_keeps_the_old_screenshot() {
+    workbook::skip_unless_linux!("needs a tmpfs (mount -t tmpfs)");
     let disk = scratch("full-disk");
     std::fs::create_dir_all(&disk).unwrap();
     let mounted = std::process::Command::new("mount")
@@ -228,6 +236,7 @@ fn an_unwritable_screenshot_path_is_refused() {
 
 #[test]
 fn no_adapter_and_no_display_say_what_to_do() {
+    workbook::skip_unless_linux!("expects Linux: no DX12, no window without DISPLAY");
     // No DX12 on Linux: no adapter at all.
     run(exe(), &["--backend", "dx12", "--screenshot", "x.png"])
         .assert_one_line_error("mesa-vulkan-drivers");
@@ -253,6 +262,7 @@ fn no_adapter_and_no_display_say_what_to_do() {
 /// A real window for 30 frames. Needs a display: CI runs the suite under `xvfb-run`.
 #[test]
 fn a_window_shows_thirty_frames_and_closes() {
+    workbook::skip_unless_linux!("the window tests run under Xvfb");
     let Ok(display) = std::env::var("DISPLAY") else {
         assert!(
             std::env::var_os("CI").is_none(),

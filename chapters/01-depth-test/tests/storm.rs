@@ -32,6 +32,7 @@ struct Display {
 
 /// The display to use, or `None` (with a message) where the tests cannot run here.
 fn display() -> Option<Display> {
+    workbook::skip_unless_linux!("needs Xvfb, xdotool and import", None);
     let display = std::env::var("DISPLAY").ok();
     // Only whether they are installed: asking them anything would need the display already.
     let tools = [("xdotool", "version"), ("import", "-version")]

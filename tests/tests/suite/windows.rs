@@ -17,6 +17,7 @@ static DISPLAY: Mutex<()> = Mutex::new(());
 /// Each lesson's window for 30 frames at 640×360, the panel shown as it opens by default.
 #[test]
 fn every_lesson_runs_thirty_frames_in_a_window_with_its_panel() {
+    workbook::skip_unless_linux!("the window tests run under Xvfb");
     if std::env::var_os("DISPLAY").is_none() {
         assert!(
             std::env::var_os("CI").is_none(),
@@ -58,6 +59,7 @@ fn every_lesson_runs_thirty_frames_in_a_window_with_its_panel() {
 #[test]
 fn a_window_left_alone_draws_nothing() {
     use std::time::{Duration, Instant};
+    workbook::skip_unless_linux!("the window tests run under Xvfb");
     if std::env::var_os("DISPLAY").is_none() {
         assert!(
             std::env::var_os("CI").is_none(),
