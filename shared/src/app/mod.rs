@@ -3,11 +3,11 @@
 //! helpers the lessons' command-line tests share. Both runners drive a lesson through [`runner`].
 
 pub mod args;
-pub mod heap;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
+pub mod heap;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod output;
 pub mod pixel;
