@@ -86,6 +86,35 @@ impl Scene {
         self.pipeline_from(device, recipe, &self.pipeline_layout, stages)
     }
 
+    /// The scene's shader with `extra` WGSL of a lesson's own appended: entry points that use the
+    /// scene's structs, bindings and functions (`transform`, `shade`). Bake pipelines with it by
+    /// [`Scene::pipeline_in`].
+    pub fn shader_with(
+        &self,
+        device: &wgpu::Device,
+        label: &str,
+        extra: &str,
+    ) -> wgpu::ShaderModule {
+        device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(label),
+            source: wgpu::ShaderSource::Wgsl(
+                format!("{}\n{extra}", include_str!("../../shaders/scene.wgsl")).into(),
+            ),
+        })
+    }
+
+    /// Bakes a recipe into a pipeline that draws the room's objects (the scene's bindings and
+    /// vertex layout) with entry points `vertex` and `fragment` of a module made by
+    /// [`Scene::shader_with`]. The recipe's `clip` is the lesson's to honour in its own entries.
+    pub fn pipeline_in(
+        &self,
+        device: &wgpu::Device,
+        recipe: &Recipe,
+        stages: (&wgpu::ShaderModule, &'static str, &'static str),
+    ) -> wgpu::RenderPipeline {
+        self.pipeline_from(device, recipe, &self.pipeline_layout, stages)
+    }
+
     /// A pipeline for the room's objects with a bind group of the caller's own (group 2) and
     /// fragment entry `fragment` of the scene's shader with `extra` WGSL appended.
     pub(crate) fn extended_pipeline(
