@@ -87,6 +87,9 @@ pub const VARIANTS: &[Case] = &[
     case("two-mirrors", &["depth=4"]),
     case("two-mirrors", &["depth=5"]),
     case("two-mirrors", &["depth=6"]),
+    case("outline", &["reflected-outline=off"]),
+    case("outline", &["grow=scale"]),
+    case("outline", &["way=screen-space"]),
 ];
 
 /// How to measure.

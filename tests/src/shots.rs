@@ -383,6 +383,61 @@ pub const SHOTS: &[Shot] = &[
     },
     // The answers of the lesson pages' "Predict the picture" questions.
     Shot {
+        name: "outline",
+        lesson: "outline",
+        ..SHOT
+    },
+    Shot {
+        name: "outline-stencil",
+        lesson: "outline",
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
+        name: "outline-no-stencil",
+        lesson: "outline",
+        settings: &["outline-stencil=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "outline-scaled",
+        lesson: "outline",
+        settings: &["grow=scale"],
+        ..SHOT
+    },
+    Shot {
+        name: "outline-whole-byte",
+        lesson: "outline",
+        settings: &["masks=whole-byte"],
+        ..SHOT
+    },
+    Shot {
+        name: "outline-screen-space",
+        lesson: "outline",
+        settings: &["way=screen-space"],
+        ..SHOT
+    },
+    Shot {
+        name: "outline-screen-space-mask",
+        lesson: "outline",
+        settings: &["way=screen-space"],
+        step: Some("draw the selection mask"),
+        ..SHOT
+    },
+    Shot {
+        name: "outline-behind-the-crate",
+        lesson: "outline",
+        camera: Some(BEHIND_THE_CRATE),
+        ..SHOT
+    },
+    Shot {
+        name: "outline-behind-the-crate-less",
+        lesson: "outline",
+        settings: &["outline-depth=less"],
+        camera: Some(BEHIND_THE_CRATE),
+        ..SHOT
+    },
+    Shot {
         name: "predict-depth-test-not-equal",
         lesson: "depth-test",
         settings: &["depth=not-equal"],
@@ -455,6 +510,18 @@ pub const SHOTS: &[Shot] = &[
         name: "predict-two-mirrors-depth-0",
         lesson: "two-mirrors",
         settings: &["depth=0"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-outline-image-unoutlined",
+        lesson: "outline",
+        settings: &["reflected-outline=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-outline-whole-byte-unoutlined",
+        lesson: "outline",
+        settings: &["masks=whole-byte", "reflected-outline=off"],
         ..SHOT
     },
 ];
@@ -549,11 +616,27 @@ pub const PAIRS: &[Pair] = &[
         wrong: "two-mirrors-always-flipped",
         right: "two-mirrors",
     },
+    Pair {
+        wrong: "outline-no-stencil",
+        right: "outline",
+    },
+    Pair {
+        wrong: "outline-scaled",
+        right: "outline",
+    },
+    Pair {
+        wrong: "outline-whole-byte",
+        right: "outline",
+    },
 ];
 
 /// A camera behind the wall and to one side, where Luna's figure 10.1 looks from: the reflected
 /// skull stands between it and the wall's back.
 pub const BEHIND_THE_WALL: &str = "140,12,10";
+
+/// A camera low and to the right, where the crate hides the skull's jaw (lesson 12's outline
+/// depth test).
+pub const BEHIND_THE_CRATE: &str = "72,-3,7";
 
 impl Shot {
     pub fn path(&self) -> PathBuf {

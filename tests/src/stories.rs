@@ -61,6 +61,12 @@ pub const STORIES: &[BookStory] = &[
         settings: &[],
         pixel: (420, 110),
     },
+    BookStory {
+        name: "outline-in-the-mirror",
+        lesson: "outline",
+        settings: &[],
+        pixel: (340, 150),
+    },
 ];
 
 impl BookStory {

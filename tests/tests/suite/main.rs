@@ -16,6 +16,7 @@ mod heap;
 mod knobs;
 mod lessons;
 mod mark_mirror;
+mod outline;
 mod panel;
 mod pixel;
 mod planar_shadow;
