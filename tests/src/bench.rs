@@ -90,6 +90,8 @@ pub const VARIANTS: &[Case] = &[
     case("outline", &["reflected-outline=off"]),
     case("outline", &["grow=scale"]),
     case("outline", &["way=screen-space"]),
+    case("depth-complexity", &["count=passed-depth"]),
+    case("depth-complexity", &["way=blend"]),
 ];
 
 /// How to measure.

@@ -438,6 +438,42 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "depth-complexity",
+        lesson: "depth-complexity",
+        ..SHOT
+    },
+    Shot {
+        name: "depth-complexity-passed",
+        lesson: "depth-complexity",
+        settings: &["count=passed-depth"],
+        ..SHOT
+    },
+    Shot {
+        name: "depth-complexity-blend",
+        lesson: "depth-complexity",
+        settings: &["way=blend"],
+        ..SHOT
+    },
+    Shot {
+        name: "depth-complexity-counts",
+        lesson: "depth-complexity",
+        step: Some("count the fragments"),
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
+        name: "depth-complexity-stack",
+        lesson: "depth-complexity",
+        settings: &["stack=64"],
+        ..SHOT
+    },
+    Shot {
+        name: "depth-complexity-wrap",
+        lesson: "depth-complexity",
+        settings: &["stack=64", "increment=wrap"],
+        ..SHOT
+    },
+    Shot {
         name: "predict-depth-test-not-equal",
         lesson: "depth-test",
         settings: &["depth=not-equal"],
@@ -522,6 +558,12 @@ pub const SHOTS: &[Shot] = &[
         name: "predict-outline-whole-byte-unoutlined",
         lesson: "outline",
         settings: &["masks=whole-byte", "reflected-outline=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-depth-complexity-blend-stack",
+        lesson: "depth-complexity",
+        settings: &["way=blend", "stack=64"],
         ..SHOT
     },
 ];
@@ -627,6 +669,10 @@ pub const PAIRS: &[Pair] = &[
     Pair {
         wrong: "outline-whole-byte",
         right: "outline",
+    },
+    Pair {
+        wrong: "depth-complexity-wrap",
+        right: "depth-complexity-stack",
     },
 ];
 

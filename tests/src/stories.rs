@@ -67,6 +67,12 @@ pub const STORIES: &[BookStory] = &[
         settings: &[],
         pixel: (340, 150),
     },
+    BookStory {
+        name: "depth-complexity-through-the-water",
+        lesson: "depth-complexity",
+        settings: &[],
+        pixel: (300, 250),
+    },
 ];
 
 impl BookStory {

@@ -8,6 +8,7 @@ mod backends;
 mod bench;
 mod book;
 mod depth;
+mod depth_complexity;
 mod drawing_order;
 mod exercises;
 mod floor_mirror;
