@@ -53,6 +53,9 @@
       after: (number, name) => "after " + number + ". " + name,
       buffer: "buffer ",
       bufferTitle: "the buffer shown, as --show",
+      draw: "draw ",
+      drawTitle: "the draw whose fragments the test map paints, as --draw",
+      everyDraw: "every draw of the step",
       lessonsView: "the lesson's view",
       lessonsViewTitle: "put the camera back where the lesson starts",
       copy: "copy",
@@ -89,6 +92,9 @@
       after: (number, name) => "第 " + number + " 步之后：" + name,
       buffer: "缓冲区 ",
       bufferTitle: "显示的缓冲区，相当于 --show",
+      draw: "绘制 ",
+      drawTitle: "测试图为哪一次绘制的片元着色，相当于 --draw",
+      everyDraw: "这一步的每一次绘制",
       lessonsView: "回到本课的视角",
       lessonsViewTitle: "把摄像机放回本课开始时的位置",
       copy: "复制",
@@ -510,6 +516,7 @@
     show.value = info.show;
     show.addEventListener("change", () => apply(() => page.set_show(show.value)));
     rows.push(element("label", {}, [words.buffer, show]));
+    if (info.show === "tests") rows.push(drawChoice(info, page, apply));
 
     const reset = element("button", { type: "button", class: "live-reset", text: words.lessonsView });
     reset.title = words.lessonsViewTitle;
@@ -531,6 +538,18 @@
       copy,
     ]);
     controls.replaceChildren(element("div", { class: "live-knobs" }, rows), same);
+  }
+
+  // With the test map shown: which of the step's draws it maps (as --draw), or every one.
+  function drawChoice(info, page, apply) {
+    const draw = element("select", { "data-control": "draw", title: words.drawTitle });
+    draw.append(element("option", { value: "0", text: words.everyDraw }));
+    info.draws.forEach((name, index) => {
+      draw.append(element("option", { value: String(index + 1), text: name }));
+    });
+    draw.value = String(info.draw);
+    draw.addEventListener("change", () => apply(() => page.set_draw(Number(draw.value))));
+    return element("label", {}, [words.draw, draw]);
   }
 
   function setUp(container) {

@@ -406,6 +406,12 @@ impl LivePage {
         self.choose("select[data-control=\"show\"]", buffer)
     }
 
+    /// With the test map shown, maps draw `draw` of the step (from 1), or every draw with 0,
+    /// through the draw select.
+    pub fn set_draw(&self, draw: usize) -> Result<()> {
+        self.choose("select[data-control=\"draw\"]", &draw.to_string())
+    }
+
     /// Sets the camera (the page's is the mouse's; this is `--camera`).
     pub fn set_camera(&self, pose: &str) -> Result<()> {
         let answer = self.evaluate(&format!(

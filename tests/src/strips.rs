@@ -66,6 +66,8 @@ fn buffer_title(show: Show) -> &'static str {
         Show::Color => "Colour",
         Show::Depth | Show::RawDepth => "Depth",
         Show::Stencil => "Stencil",
+        Show::Complexity => "Complexity",
+        Show::Tests => "Tests",
     }
 }
 
@@ -77,7 +79,7 @@ pub fn write(lesson: &str) -> Result<Vec<PathBuf>> {
     if dir.exists() {
         std::fs::remove_dir_all(&dir).with_context(|| format!("cannot empty {}", dir.display()))?;
     }
-    workbook::app::headless::save_film(&stills, &dir)?;
+    workbook::app::headless::save_film(&stills, &Show::BUFFERS, &dir)?;
     std::fs::write(html_path(lesson), html(lesson, &stills))
         .with_context(|| format!("cannot write {}", html_path(lesson).display()))?;
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)?

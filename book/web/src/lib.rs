@@ -136,6 +136,11 @@ impl LiveLesson {
         self.with(|page| page.set_show(buffer))
     }
 
+    /// The draw (from 1) whose test map is shown, or every draw of the step with 0.
+    pub fn set_draw(&self, draw: usize) -> Result<(), JsError> {
+        self.with(|page| page.set_draw(draw))
+    }
+
     /// The native command that draws the canvas's picture.
     pub fn command_line(&self) -> Result<String, JsError> {
         self.with(|page| Ok(page.command_line()))

@@ -366,7 +366,8 @@ struct Expected {
 }
 
 impl Expected {
-    const SHOWS: [&'static str; 3] = ["color", "depth", "stencil"];
+    /// What `Tab` cycles through, in order.
+    const SHOWS: [workbook::Show; 5] = workbook::Show::VIEWS;
 
     /// The window as it opens, on a frame of `steps` steps: every knob and view at its default.
     fn at_defaults(steps: usize) -> Expected {
@@ -385,7 +386,7 @@ impl Expected {
             "shift+1" => self.depth = (self.depth + values - 1) % values,
             "bracketleft" => self.step = (self.step - 1).max(1),
             "bracketright" => self.step = (self.step + 1).min(self.steps),
-            "Tab" => self.show = (self.show + 1) % 3,
+            "Tab" => self.show = (self.show + 1) % Self::SHOWS.len(),
             _ => unreachable!("{key}"),
         }
     }
@@ -394,13 +395,13 @@ impl Expected {
         let depth = depth_test::KNOBS[0].values[self.depth];
         vec![
             format!(" — step {}/{}: ", self.step, self.steps),
-            format!(" — showing {} — ", Self::SHOWS[self.show]),
+            format!(" — showing {} — ", Self::SHOWS[self.show].name()),
             format!(" [1] depth={depth} "),
         ]
     }
 
     /// The xdotool chain of keys that undoes the keys' net effect: the knob on round to its
-    /// default, the steps on to the last, the buffers on round to colour.
+    /// default, the steps on to the last, the views on round to colour.
     fn undoing_keys(&self) -> Vec<String> {
         let mut reset = vec!["key".to_string(), "--delay".into(), "0".into()];
         let values = depth_test::KNOBS[0].values.len();
@@ -410,7 +411,11 @@ impl Expected {
             "bracketright".into(),
             self.steps - self.step,
         ));
-        reset.extend(std::iter::repeat_n("Tab".into(), (3 - self.show) % 3));
+        let shows = Self::SHOWS.len();
+        reset.extend(std::iter::repeat_n(
+            "Tab".into(),
+            (shows - self.show) % shows,
+        ));
         reset
     }
 }

@@ -42,8 +42,12 @@ pub struct Args {
     /// Which buffer the window or screenshot shows [default: the lesson's own, mostly color].
     #[arg(long, value_name = "BUFFER", value_enum)]
     pub show: Option<Show>,
-    /// Write every step's colour, depth and stencil buffers into this folder as
-    /// NN-<step>-{color,depth,stencil}.png, at --size.
+    /// With --show tests: the draw of the step whose fragments' fates are shown (from 1, in the
+    /// order the step draws; see --pixel for their names). Without it, every draw of the step.
+    #[arg(long, value_name = "N", value_parser = parse_draw)]
+    pub draw: Option<usize>,
+    /// Write every step's colour, depth and stencil buffers and its depth complexity into this
+    /// folder as NN-<step>-{color,depth,stencil,complexity}.png, at --size.
     #[arg(long, value_name = "DIR")]
     pub film: Option<PathBuf>,
     /// Tell one pixel's story: for every step and every draw, its colour, depth and stencil, and the
@@ -125,6 +129,15 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
 }
 
 /// Parses `X,Y`: a pixel's column and row from the top left.
+/// Parses `--draw`: a draw's number in its step, from 1; kept as its index, from 0.
+fn parse_draw(text: &str) -> Result<usize, String> {
+    match text.trim().parse::<usize>() {
+        Ok(0) => Err("draws count from 1, in the order the step draws".into()),
+        Ok(n) => Ok(n - 1),
+        Err(_) => Err("expected a draw's number in its step, from 1".into()),
+    }
+}
+
 fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
     text.split_once(',')
         .and_then(|(x, y)| Some((x.trim().parse().ok()?, y.trim().parse().ok()?)))

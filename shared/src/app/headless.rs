@@ -33,6 +33,9 @@ pub struct Request {
     pub stop: Stop,
     /// The buffer the colour image shows.
     pub show: Show,
+    /// With [`Show::Tests`], the draw of the step whose test map is shown (its index in the step);
+    /// every draw of the step for `None`.
+    pub draw: Option<usize>,
     pub backend: Option<String>,
     pub verbose: bool,
     /// How the frame records its steps when nothing looks between them: in one render pass (the
@@ -53,6 +56,7 @@ impl Request {
             read_depth: false,
             stop: Stop::Last,
             show: L::SHOWS,
+            draw: None,
             backend: None,
             verbose: false,
             passes: Passes::default(),
@@ -105,19 +109,23 @@ pub struct FrameTiming {
 pub struct Still {
     /// The step's name.
     pub step: &'static str,
-    /// The colours, the depth buffer linearised to grey, and the stencil buffer in false colour.
+    /// The colours, the depth buffer linearised to grey, the stencil buffer in false colour, and
+    /// the depth complexity so far as heat.
     pub color: RgbaImage,
     pub depth: RgbaImage,
     pub stencil: RgbaImage,
+    pub complexity: RgbaImage,
 }
 
 impl Still {
-    /// The image of one of the three buffers.
+    /// The image of one of the buffers, or of the complexity (a film has no test maps: the
+    /// colours stand for them).
     pub fn image(&self, show: Show) -> &RgbaImage {
         match show {
             Show::Depth | Show::RawDepth => &self.depth,
             Show::Stencil => &self.stencil,
-            Show::Color => &self.color,
+            Show::Complexity => &self.complexity,
+            Show::Color | Show::Tests => &self.color,
         }
     }
 }
@@ -141,6 +149,7 @@ pub struct Headless<L: Lesson> {
     read_depth: bool,
     stop: Stop,
     show: Show,
+    draw: Option<usize>,
 }
 
 impl<L: Lesson> Headless<L> {
@@ -177,8 +186,14 @@ impl<L: Lesson> Headless<L> {
                 read_depth: request.read_depth,
                 stop: request.stop,
                 show: request.show,
+                draw: request.draw,
             })
         })
+    }
+
+    /// Where the next captures stop, what they show, and the draw a test map shows.
+    pub fn set_view(&mut self, stop: Stop, show: Show, draw: Option<usize>) {
+        (self.stop, self.show, self.draw) = (stop, show, draw);
     }
 
     /// Rebuilds the lesson for other knob values.
@@ -268,7 +283,7 @@ impl<L: Lesson> Headless<L> {
 
     /// Every draw of the frame, as a pixel's story meets them: step, recipe and object.
     pub fn draws(&self) -> Vec<crate::gpu::pass::Draw> {
-        crate::app::pixel::draws(&self.runner, &self.color)
+        crate::app::pixel::draws(&self.runner, &view_of(&self.color))
     }
 
     /// Renders the frame once, reading back the colour, depth and stencil buffers after every step.
@@ -321,10 +336,12 @@ impl<L: Lesson> Headless<L> {
             return Err(error);
         }
         runner.gpu.queue.submit([encoder.finish()]);
+        let complexity = self.film_complexity()?;
         steps
             .into_iter()
             .zip(readbacks)
-            .map(|(step, readbacks)| {
+            .zip(complexity)
+            .map(|((step, readbacks), complexity)| {
                 let [color, depth, stencil] =
                     readbacks.map(|readback| picture(readback.read(device)?, &self.color));
                 Ok(Still {
@@ -332,8 +349,44 @@ impl<L: Lesson> Headless<L> {
                     color: color?,
                     depth: depth?,
                     stencil: stencil?,
+                    complexity,
                 })
             })
+            .collect()
+    }
+
+    /// The frame replayed with every draw counted, the count painted as heat after every step (in
+    /// a step drawn into the lesson's own target, that target's count).
+    fn film_complexity(&self) -> Result<Vec<RgbaImage>> {
+        let (runner, device) = (&self.runner, &self.runner.gpu.device);
+        let (color, heat) = (&self.color, &self.stencil_picture);
+        let (color_view, heat_view) = (view_of(color), view_of(heat));
+        let mut readbacks = Vec::new();
+        let mut failure = None;
+        let mut after_step =
+            |encoder: &mut wgpu::CommandEncoder, _, offscreen: Option<&Offscreen>| {
+                let shown = match offscreen {
+                    Some(target) => {
+                        runner.show_offscreen(encoder, Show::Complexity, target, &heat_view)
+                    }
+                    None => runner.show(encoder, Show::Complexity, &heat_view),
+                };
+                if let Err(error) = shown {
+                    failure.get_or_insert(error);
+                }
+                let all = wgpu::TextureAspect::All;
+                readbacks.push(Readback::new(device, encoder, heat, all, 4));
+            };
+        let request = FrameRequest::to(&color_view).each_step(&mut after_step);
+        let request = request.show(Show::Complexity, &heat_view);
+        let Recorded { encoder, .. } = runner.record(request)?;
+        if let Some(error) = failure {
+            return Err(error);
+        }
+        runner.gpu.queue.submit([encoder.finish()]);
+        readbacks
+            .into_iter()
+            .map(|readback| picture(readback.read(device)?, color))
             .collect()
     }
 
@@ -344,10 +397,13 @@ impl<L: Lesson> Headless<L> {
         let shown = match self.show {
             Show::Color => &self.color,
             Show::Depth | Show::RawDepth => &self.depth_picture,
-            Show::Stencil => &self.stencil_picture,
+            Show::Stencil | Show::Complexity => &self.stencil_picture,
+            Show::Tests => &self.color,
         };
         let output = shown.create_view(&Default::default());
-        let request = FrameRequest::to(&color_view).stop(self.stop);
+        let request = FrameRequest::to(&color_view)
+            .stop(self.stop)
+            .draw(self.draw);
         let mut encoder = runner.record(request.show(self.show, &output))?.encoder;
 
         let all = wgpu::TextureAspect::All;
@@ -500,6 +556,10 @@ impl Readback {
     }
 }
 
+fn view_of(texture: &wgpu::Texture) -> wgpu::TextureView {
+    texture.create_view(&Default::default())
+}
+
 /// Waits for the copies into `buffer` (made `MAP_READ`) and returns its bytes.
 pub(crate) fn map(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<Vec<u8>> {
     pollster::block_on(crate::gpu::readback::read_buffer(device, buffer))
@@ -508,15 +568,8 @@ pub(crate) fn map(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<Vec<u8
 /// Renders as the command line asks when it asks for no window: `--screenshot` (after `--frames`
 /// frames), `--film`, `--list-steps`.
 pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
-    if args.frames == Some(0) {
-        bail!("--frames must be at least 1");
-    }
-    if args.pixel.is_some() && (args.frames.is_some() || args.step != Stop::Last) {
-        bail!("--pixel tells the story of the whole frame, once: leave out --frames and --step");
-    }
-    if args.frames.is_some() && args.film.is_some() {
-        bail!("--film records one frame step by step; --frames counts whole frames");
-    }
+    check_args::<L>(args)?;
+
     let start = std::time::Instant::now();
     let mut request = Request {
         width: args.size.0,
@@ -528,6 +581,7 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
         read_depth: false,
         stop: args.step,
         show: args.show::<L>(),
+        draw: args.draw,
         backend: args.backend.clone(),
         verbose: args.verbose,
         passes: Passes::default(),
@@ -573,9 +627,9 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
                 start.elapsed().as_millis()
             );
         }
-        save_film(&stills, dir)?;
+        save_film(&stills, &Show::FILM, dir)?;
         if args.verbose {
-            let count = stills.len() * Show::BUFFERS.len();
+            let count = stills.len() * Show::FILM.len();
             eprintln!(
                 "wrote {count} images into {} in {} ms",
                 dir.display(),
@@ -586,16 +640,33 @@ pub fn run<L: Lesson>(args: &Args, knobs: Knobs, camera: Camera) -> Result<()> {
     Ok(())
 }
 
-/// Writes a film into `dir` (made if missing): `NN-<step>-{color,depth,stencil}.png` for every
-/// step, encoded on all cores.
-pub fn save_film(stills: &[Still], dir: &std::path::Path) -> Result<()> {
+/// Refuses options that do not go together.
+fn check_args<L: Lesson>(args: &Args) -> Result<()> {
+    if args.frames == Some(0) {
+        bail!("--frames must be at least 1");
+    }
+    if args.pixel.is_some() && (args.frames.is_some() || args.step != Stop::Last) {
+        bail!("--pixel tells the story of the whole frame, once: leave out --frames and --step");
+    }
+    if args.draw.is_some() && args.show::<L>() != Show::Tests {
+        bail!("--draw picks the draw a test map shows: add --show tests");
+    }
+    if args.frames.is_some() && args.film.is_some() {
+        bail!("--film records one frame step by step; --frames counts whole frames");
+    }
+    Ok(())
+}
+
+/// Writes a film into `dir` (made if missing): `NN-<step>-<show>.png` for every step and each of
+/// `shows` (`--film` writes [`Show::FILM`]), encoded on all cores.
+pub fn save_film(stills: &[Still], shows: &[Show], dir: &std::path::Path) -> Result<()> {
     std::fs::create_dir_all(dir)
         .with_context(|| format!("cannot write the film into `{}`", dir.display()))?;
     let files: Vec<_> = stills
         .iter()
         .enumerate()
         .flat_map(|(index, still)| {
-            Show::BUFFERS.map(|show| {
+            shows.iter().map(move |&show| {
                 let path = dir.join(steps::film_file(index + 1, still.step, show));
                 (still.image(show), path)
             })

@@ -38,13 +38,13 @@ pub fn story<L: Lesson>(
         .scoped(|| pollster::block_on(tell(runner, color, pixel, settings)))
 }
 
-/// Every draw of the frame `runner` draws into `color`, as a pixel's story meets them (recorded,
-/// not submitted): its step, its recipe (where the workbook baked its pipeline) and its object.
-pub fn draws<L: Lesson>(runner: &Runner<L>, color: &wgpu::Texture) -> Vec<Draw> {
+/// Every draw of the frame `runner` draws into `color` (a view of the frame's size), as a pixel's
+/// story meets them (recorded, not submitted): its step, its recipe (where the workbook baked its
+/// pipeline) and its object.
+pub fn draws<L: Lesson>(runner: &Runner<L>, color: &wgpu::TextureView) -> Vec<Draw> {
     let mut probe = Probe::new(&runner.gpu.device, (0, 0), 0);
     probe.start(Probing::Until(0));
-    let color_view = color.create_view(&Default::default());
-    let request = FrameRequest::to(&color_view).probed(&mut probe);
+    let request = FrameRequest::to(color).probed(&mut probe);
     drop(runner.record(request));
     probe.draws
 }

@@ -5,9 +5,9 @@ use std::sync::Arc;
 
 use anyhow::Result;
 
-use crate::gpu::pass::Probe;
+use crate::gpu::pass::{Probe, Probing};
 use crate::gpu::timing::StepTimer;
-use crate::gpu::views::DepthViewPipelines;
+use crate::gpu::views::{DepthViewPipelines, Palette};
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::Knobs;
 use crate::lesson::steps::{Show, Stop};
@@ -25,6 +25,8 @@ pub struct Runner<L: Lesson> {
     depth_bind_group: Option<wgpu::BindGroup>,
     /// How frames that nothing looks into between their steps are recorded (tests compare both).
     pub passes: Passes,
+    /// The test map of `--show tests`, kept for the next frame of the same size.
+    test_map: std::sync::Mutex<Option<((u32, u32), wgpu::TextureView)>>,
 }
 
 impl<L: Lesson> Runner<L> {
@@ -66,6 +68,7 @@ impl<L: Lesson> Runner<L> {
             depth_stencil,
             depth_bind_group,
             passes: Passes::default(),
+            test_map: Default::default(),
         })
     }
 
@@ -105,7 +108,18 @@ impl<L: Lesson> Runner<L> {
             timer,
             probe,
             mut after_step,
+            draw,
         } = request;
+        let map = output.map(|(show, _)| show).filter(|show| show.is_map());
+        let mut whole = match probe {
+            None => self.replay(map, (color, stop, draw), pictures, timer)?,
+            Some(_) => None,
+        };
+        let (pictures, timer) = match whole {
+            Some(_) => (None, None),
+            None => (pictures, timer),
+        };
+        let probe = probe.or(whole.as_mut());
         // Looking between the steps, or at one pixel through them, needs a pass each; otherwise as
         // the runner records.
         let passes = match (&after_step, &probe) {
@@ -124,6 +138,10 @@ impl<L: Lesson> Runner<L> {
                 {
                     shown = true;
                     let mut paint = |show, output| {
+                        // A test map of such a step is refused once the frame is recorded.
+                        if show == Show::Tests {
+                            return;
+                        }
                         if let Err(error) = self.show_offscreen(encoder, show, target, output) {
                             failure.get_or_insert(error);
                         }
@@ -136,28 +154,15 @@ impl<L: Lesson> Runner<L> {
                     }
                 }
             };
-        let targets = (color, &self.depth_stencil);
-        let cameras = (self.camera, self.view());
-        let (stop_count, present) = (stop.count(), Some(&mut present as AfterStep<'_>));
-        let frame = Frame::new(
-            &self.gpu,
-            &self.scene,
-            cameras,
-            targets,
-            stop_count,
-            present,
-        );
-        let mut frame = frame.with_passes(passes);
-        frame.timer = timer;
-        if let Some(probe) = probe {
-            frame = frame.with_probe(probe);
-        }
-        self.lesson.render(&mut frame);
-        let (mut encoder, steps) = frame.finish();
+        let present = Some(&mut present as AfterStep<'_>);
+        let (mut encoder, steps) = self.render(color, (stop, passes, timer), probe, present);
         if let Some(error) = failure {
             return Err(error);
         }
         stop.resolve(&steps)?;
+        if let Some(whole) = &whole {
+            mapped(whole, &steps)?;
+        }
         if let Some(timer) = timer {
             // The steps after the stop were named but not recorded.
             timer.resolve(&mut encoder, steps.len().min(stop.count()));
@@ -173,6 +178,34 @@ impl<L: Lesson> Runner<L> {
         Ok(Recorded { encoder, steps })
     }
 
+    /// Records the lesson's frame into `color`, up to `stop`, recorded as `passes` say, timed,
+    /// probed and looked into after each step as asked.
+    fn render<'f>(
+        &'f self,
+        color: &'f wgpu::TextureView,
+        (stop, passes, timer): (Stop, Passes, Option<&'f StepTimer>),
+        probe: Option<&'f mut Probe>,
+        present: Option<AfterStep<'f>>,
+    ) -> (wgpu::CommandEncoder, Vec<&'static str>) {
+        let targets = (color, &self.depth_stencil);
+        let cameras = (self.camera, self.view());
+        let frame = Frame::new(
+            &self.gpu,
+            &self.scene,
+            cameras,
+            targets,
+            stop.count(),
+            present,
+        );
+        let mut frame = frame.with_passes(passes);
+        frame.timer = timer;
+        if let Some(probe) = probe {
+            frame = frame.with_probe(probe);
+        }
+        self.lesson.render(&mut frame);
+        frame.finish()
+    }
+
     /// The depth and stencil pictures asked for, each with what it shows (none of depth where the
     /// backend cannot read depth in a shader).
     fn pictures<'p>(&self, pictures: Option<Pictures<'p>>) -> Vec<(Show, &'p wgpu::TextureView)> {
@@ -180,6 +213,7 @@ impl<L: Lesson> Runner<L> {
             depth,
             stencil,
             raw_depth,
+            ..
         }) = pictures
         else {
             return Vec::new();
@@ -197,16 +231,17 @@ impl<L: Lesson> Runner<L> {
     }
 
     /// Draws the lesson alone into `target` of `size` pixels (a window's surface with the panel
-    /// hidden), as the headless runner draws it, and submits.
+    /// hidden), as the headless runner draws it, stopped and shown as asked (with the draw a test
+    /// map shows), and submits.
     pub fn draw_alone(
         &mut self,
         target: &wgpu::TextureView,
         (width, height): (u32, u32),
-        stop: Stop,
-        show: Show,
+        (stop, show, draw): (Stop, Show, Option<usize>),
     ) -> Result<()> {
         self.resize(width, height);
         let request = FrameRequest::to(target).stop(stop).show(show, target);
+        let request = request.draw(draw);
         self.gpu
             .queue
             .submit([self.record(request)?.encoder.finish()]);
@@ -220,11 +255,11 @@ impl<L: Lesson> Runner<L> {
         &mut self,
         (picture, size): (&wgpu::TextureView, (u32, u32)),
         target: &wgpu::TextureView,
-        stop: Stop,
-        show: Show,
+        (stop, show, draw): (Stop, Show, Option<usize>),
     ) -> Result<()> {
         self.resize(size.0, size.1);
         let request = FrameRequest::to(picture).stop(stop).show(show, picture);
+        let request = request.draw(draw);
         let mut encoder = self.record(request)?.encoder;
         let (device, pixelated) = (&self.gpu.device, wgpu::FilterMode::Nearest);
         let blit = &self.scene.blit;
@@ -291,7 +326,7 @@ impl<L: Lesson> Runner<L> {
     pub fn can_show(&self, show: Show) -> bool {
         match show {
             Show::Depth | Show::RawDepth => self.depth_bind_group.is_some(),
-            Show::Color | Show::Stencil => true,
+            Show::Color | Show::Stencil | Show::Complexity | Show::Tests => true,
         }
     }
 
@@ -311,14 +346,15 @@ impl<L: Lesson> Runner<L> {
                 .ok_or_else(|| anyhow::anyhow!(DepthViewPipelines::UNSUPPORTED))
         };
         match show {
-            Show::Color => {}
+            Show::Color | Show::Tests => {}
             Show::Depth | Show::RawDepth => {
                 let (pipelines, bind_group) = depth()?;
                 pipelines.show(encoder, target, bind_group, show == Show::RawDepth);
             }
-            Show::Stencil => {
+            Show::Stencil | Show::Complexity => {
                 let (device, views) = (&self.gpu.device, &self.scene.stencil_view);
-                views.show(device, encoder, target, &self.depth_stencil);
+                let palette = palette(show);
+                views.show(device, encoder, (target, palette), &self.depth_stencil);
             }
         }
         Ok(())
@@ -334,6 +370,12 @@ impl<L: Lesson> Runner<L> {
         output: &wgpu::TextureView,
     ) -> Result<()> {
         let device = &self.gpu.device;
+        if show == Show::Tests {
+            anyhow::bail!(
+                "this step draws into the lesson's own texture: a test map shows a step drawn into \
+                 the frame's target"
+            );
+        }
         if show == Show::Color {
             self.scene
                 .blit
@@ -349,7 +391,7 @@ impl<L: Lesson> Runner<L> {
         );
         let picture = picture.create_view(&Default::default());
         match show {
-            Show::Color => {}
+            Show::Color | Show::Tests => {}
             Show::Depth | Show::RawDepth => {
                 let pipelines = self.scene.depth_view.as_ref();
                 let pipelines =
@@ -357,13 +399,70 @@ impl<L: Lesson> Runner<L> {
                 let bind_group = pipelines.bind_group(device, &target.depth_stencil);
                 pipelines.show(encoder, &picture, &bind_group, show == Show::RawDepth);
             }
-            Show::Stencil => {
+            Show::Stencil | Show::Complexity => {
                 let views = &self.scene.stencil_view;
-                views.show(device, encoder, &picture, &target.depth_stencil);
+                let palette = (&picture, palette(show));
+                views.show(device, encoder, palette, &target.depth_stencil);
             }
         }
         self.scene.blit.draw(device, encoder, &picture, output);
         Ok(())
+    }
+
+    /// Where a map is shown, the probe that replays the frame's draws as their twins, in a frame of
+    /// its own: the buffers' pictures, where asked for too, are recorded and submitted first, from
+    /// the frame as the lesson draws it. Where the complexity's picture is asked for beside
+    /// another view, its frame is recorded and submitted first.
+    fn replay(
+        &self,
+        map: Option<Show>,
+        (color, stop, draw): (&wgpu::TextureView, Stop, Option<usize>),
+        pictures: Option<Pictures<'_>>,
+        timer: Option<&StepTimer>,
+    ) -> Result<Option<Probe>> {
+        let submit = |request| -> Result<()> {
+            let recorded = self.record(request)?;
+            self.gpu.queue.submit([recorded.encoder.finish()]);
+            Ok(())
+        };
+        let Some(show) = map else {
+            if let Some(heat) = pictures.and_then(|p| p.complexity) {
+                let to = FrameRequest::to(color).stop(stop);
+                submit(to.show(Show::Complexity, heat))?;
+            }
+            return Ok(None);
+        };
+        if pictures.is_some() {
+            let frame = FrameRequest::to(color).stop(stop).timed(timer);
+            let pictures = pictures.map(|p| Pictures {
+                complexity: p.complexity.filter(|_| show != Show::Complexity),
+                ..p
+            });
+            submit(FrameRequest { pictures, ..frame })?;
+        }
+        Ok(Some(self.whole_probe(show, stop, draw)?))
+    }
+
+    /// The probe that replays the frame for a map: every draw counted, or the fates of the draws of
+    /// the step the frame stops after, drawn into a test map of the frame's size.
+    fn whole_probe(&self, show: Show, stop: Stop, draw: Option<usize>) -> Result<Probe> {
+        let device = &self.gpu.device;
+        if show == Show::Complexity {
+            return Ok(Probe::whole(device, Probing::Count, None));
+        }
+        let step = stop.resolve(&self.steps())? - 1;
+        let mut cached = self.test_map.lock().unwrap_or_else(|p| p.into_inner());
+        let size = self.depth_stencil.size();
+        let format = self.scene.color_format;
+        let map = match cached.as_ref() {
+            Some((made_for, map)) if *made_for == size => map.clone(),
+            _ => {
+                let map = crate::gpu::maps::map_texture(device, format, size);
+                cached.insert((size, map)).1.clone()
+            }
+        };
+        let probing = Probing::Fates { step, draw };
+        Ok(Probe::whole(device, probing, Some(map)))
     }
 
     /// Copies the depth buffer into an R32Float texture the caller can read back.
@@ -392,13 +491,17 @@ pub struct FrameRequest<'r> {
     timer: Option<&'r StepTimer>,
     probe: Option<&'r mut Probe>,
     after_step: Option<AfterStep<'r>>,
+    /// The draw a test map shows (its index in the step), or every draw of the step.
+    draw: Option<usize>,
 }
 
-/// The depth and stencil buffers painted to be seen (the window's panel shows them small).
+/// The depth and stencil buffers painted to be seen (the window's panel shows them small), and
+/// the depth complexity where asked for.
 #[derive(Clone, Copy)]
 struct Pictures<'p> {
     depth: &'p wgpu::TextureView,
     stencil: &'p wgpu::TextureView,
+    complexity: Option<&'p wgpu::TextureView>,
     /// The stored depth values rather than the linearised depth.
     raw_depth: bool,
 }
@@ -414,6 +517,7 @@ impl<'r> FrameRequest<'r> {
             timer: None,
             probe: None,
             after_step: None,
+            draw: None,
         }
     }
 
@@ -437,9 +541,19 @@ impl<'r> FrameRequest<'r> {
         let pictures = Some(Pictures {
             depth,
             stencil,
+            complexity: None,
             raw_depth,
         });
         Self { pictures, ..self }
+    }
+
+    /// With the depth complexity painted into `complexity` too, counted in a frame of its own
+    /// recorded and submitted before this one (after [`FrameRequest::pictures`]).
+    pub fn complexity(mut self, complexity: &'r wgpu::TextureView) -> Self {
+        if let Some(pictures) = &mut self.pictures {
+            pictures.complexity = Some(complexity);
+        }
+        self
     }
 
     /// With every step's pass writing its timestamps into `timer`, resolved for
@@ -455,6 +569,12 @@ impl<'r> FrameRequest<'r> {
         Self { probe, ..self }
     }
 
+    /// With [`Show::Tests`], the test map of this draw of the step (its index in the step, from 0)
+    /// rather than of every draw in it.
+    pub fn draw(self, draw: Option<usize>) -> Self {
+        Self { draw, ..self }
+    }
+
     /// Calling `after_step` after every step (a pass a step): the film of every step's buffers.
     pub fn each_step(self, after_step: AfterStep<'r>) -> Self {
         let after_step = Some(after_step);
@@ -467,6 +587,38 @@ impl<'r> FrameRequest<'r> {
 pub struct Recorded {
     pub encoder: wgpu::CommandEncoder,
     pub steps: Vec<&'static str>,
+}
+
+/// The palette a view paints the stencil buffer in.
+fn palette(show: Show) -> Palette {
+    match show {
+        Show::Complexity => Palette::Heat,
+        _ => Palette::Values,
+    }
+}
+
+/// Fails where a test map was asked for and not drawn: its step drew into the lesson's own target,
+/// or its draw is past the step's last.
+fn mapped(probe: &Probe, steps: &[&str]) -> Result<()> {
+    let Probing::Fates { step, draw } = probe.probing else {
+        return Ok(());
+    };
+    let (number, name) = (step + 1, steps[step]);
+    if probe.map_drawn {
+        let count = probe.draws.iter().filter(|d| d.step == step).count();
+        match draw {
+            Some(draw) if draw >= count => anyhow::bail!(
+                "step {number} ({name}) has {count} draw{}: --draw takes 1 to {count}, or none for \
+                 every draw of the step",
+                if count == 1 { "" } else { "s" }
+            ),
+            _ => return Ok(()),
+        }
+    }
+    anyhow::bail!(
+        "step {number} ({name}) draws into the lesson's own texture: a test map shows a step drawn \
+         into the frame's target"
+    )
 }
 
 fn depth_bind_group(gpu: &Gpu, scene: &Scene, target: &DepthStencil) -> Option<wgpu::BindGroup> {

@@ -139,11 +139,13 @@ pub fn check_lesson_binary(exe: &Path, scratch: &Path) {
     let film_arg = film.to_str().expect("a UTF-8 path");
     run(exe, &["--size", "160x90", "--film", film_arg]).assert_clean_success();
     let files = std::fs::read_dir(&film).map_or(0, |entries| entries.count());
+    let shows = crate::Show::FILM.len();
     assert_eq!(
         files,
-        3 * count,
+        shows * count,
         "--film wrote {files} files for {count} steps"
     );
+    check_maps(exe, shot_arg);
     let past = (count + 1).to_string();
     run(exe, &["--step", &past, "--screenshot", shot_arg]).assert_one_line_error("no step");
 
@@ -156,6 +158,8 @@ pub fn check_lesson_binary(exe: &Path, scratch: &Path) {
                 "--frames", "5", "--size", "320x240", "--step", "2", "--show", "depth",
             ];
             run_with(exe, &stepped, &[("DISPLAY", &display)]).assert_clean_success();
+            let mapped = ["--frames", "5", "--size", "320x240", "--show", "tests"];
+            run_with(exe, &mapped, &[("DISPLAY", &display)]).assert_clean_success();
         }
         Err(_) => {
             assert!(
@@ -165,6 +169,18 @@ pub fn check_lesson_binary(exe: &Path, scratch: &Path) {
             eprintln!("window check skipped: no DISPLAY (run under xvfb-run to include it)");
         }
     }
+}
+
+/// The maps: the complexity, the last step's test map, a draw past the step's last refused, and
+/// `--draw` without the test map refused.
+fn check_maps(exe: &Path, shot_arg: &str) {
+    let complexity = ["--size", "160x90", "--show", "complexity", "--screenshot"];
+    run(exe, &[&complexity[..], &[shot_arg]].concat()).assert_clean_success();
+    let tests = ["--size", "160x90", "--show", "tests", "--screenshot"];
+    run(exe, &[&tests[..], &[shot_arg]].concat()).assert_clean_success();
+    run(exe, &[&tests[..], &[shot_arg, "--draw", "999"]].concat())
+        .assert_one_line_error("--draw takes 1 to");
+    run(exe, &["--draw", "1", "--screenshot", shot_arg]).assert_one_line_error("add --show tests");
 }
 
 /// The step captions of a book strip (see the tests' `strips` module), as `--list-steps` prints

@@ -81,8 +81,10 @@ pub trait Page {
     fn set_knob(&mut self, name: &str, value: &str) -> Result<()>;
     /// `--step N` (from 1), or the whole frame with 0.
     fn set_step(&mut self, step: usize) -> Result<()>;
-    /// `--show color|depth|stencil`.
+    /// `--show color|depth|stencil|complexity|tests`.
     fn set_show(&mut self, name: &str) -> Result<()>;
+    /// `--draw N` (from 1) with `--show tests`, or every draw of the step with 0.
+    fn set_draw(&mut self, draw: usize) -> Result<()>;
     /// The command that draws the canvas's picture natively: `cargo run -p … -- --size … --set …`.
     fn command_line(&self) -> String;
     /// The story of the canvas's pixel (`x`, `y`) through the whole frame, as `--pixel X,Y` tells
@@ -100,6 +102,8 @@ pub struct Live<L: Lesson> {
     view_format: wgpu::TextureFormat,
     stop: Stop,
     show: Show,
+    /// The draw a test map shows (its index in the step), or every draw of the step.
+    draw: Option<usize>,
     /// Where a frame is drawn on WebGL2 before it is copied onto the canvas.
     webgl2_picture: Picture,
 }
@@ -164,6 +168,7 @@ pub async fn start<L: Lesson>(
         view_format,
         stop: Stop::Last,
         show: L::SHOWS,
+        draw: None,
         webgl2_picture: Picture::new("WebGL2 frame", view_format),
     }))
 }
@@ -234,12 +239,35 @@ impl<L: Lesson> Live<L> {
             .then_some("WebGL2 cannot read the depth buffer in a shader: run on WebGPU")
     }
 
+    /// The draws of the step the frame stops after, named as a quoted JSON string each, where its
+    /// test map is shown (listing them records a frame).
+    fn step_draws(&self) -> Vec<String> {
+        if self.show != Show::Tests {
+            return Vec::new();
+        }
+        let steps = self.runner.steps();
+        let step = self.stop.resolve(&steps).unwrap_or(steps.len());
+        let (device, format) = (&self.runner.gpu.device, self.runner.scene.color_format);
+        let size = self.runner.depth_stencil.size();
+        let usage = wgpu::TextureUsages::empty();
+        let texture = crate::gpu::target_texture(device, "draws' listing", format, size, usage);
+        let draws =
+            crate::app::pixel::draws(&self.runner, &texture.create_view(&Default::default()));
+        draws
+            .iter()
+            .filter(|draw| draw.step + 1 == step)
+            .enumerate()
+            .map(|(index, draw)| quote(&crate::gpu::pass::draw_name(index, draw)))
+            .collect()
+    }
+
     fn setting(&self) -> Setting {
         Setting {
             knobs: self.runner.knobs.clone(),
             camera: self.runner.camera,
             show: self.show,
             stop: self.stop,
+            draw: self.draw,
         }
     }
 
@@ -286,9 +314,10 @@ impl<L: Lesson> Live<L> {
             // writes) would never reach the canvas. The copy's own draw writes every colour.
             let picture = self.webgl2_picture.at(&self.runner.gpu.device, size);
             self.runner
-                .draw_through((&picture, size), &view, self.stop, self.show)?;
+                .draw_through((&picture, size), &view, (self.stop, self.show, self.draw))?;
         } else {
-            self.runner.draw_alone(&view, size, self.stop, self.show)?;
+            let asked = (self.stop, self.show, self.draw);
+            self.runner.draw_alone(&view, size, asked)?;
         }
         self.runner.gpu.queue.present(frame);
         self.runner.gpu.check_errors()?;
@@ -339,7 +368,7 @@ impl<L: Lesson> Page for Live<L> {
             Stop::After(number) => number,
         };
         let _ = write!(json, "],\"steps\":[{}],\"step\":{step},", steps.join(","));
-        let shows: Vec<String> = Show::BUFFERS
+        let shows: Vec<String> = Show::VIEWS
             .iter()
             .map(|show| {
                 let why = self.cannot_show(*show).map_or("null".to_string(), quote);
@@ -348,9 +377,11 @@ impl<L: Lesson> Page for Live<L> {
             .collect();
         let _ = write!(
             json,
-            "\"shows\":[{}],\"show\":{},\"command\":{}}}",
+            "\"shows\":[{}],\"show\":{},\"draws\":[{}],\"draw\":{},\"command\":{}}}",
             shows.join(","),
             quote(self.show.name()),
+            self.step_draws().join(","),
+            self.draw.map_or(0, |draw| draw + 1),
             quote(&self.command_line()),
         );
         json
@@ -416,14 +447,22 @@ impl<L: Lesson> Page for Live<L> {
         };
         stop.resolve(&self.runner.steps())?;
         self.stop = stop;
+        self.draw = None;
+        Ok(())
+    }
+
+    fn set_draw(&mut self, draw: usize) -> Result<()> {
+        self.draw = draw.checked_sub(1);
         Ok(())
     }
 
     fn set_show(&mut self, name: &str) -> Result<()> {
-        let show = Show::BUFFERS
+        let show = Show::VIEWS
             .into_iter()
             .find(|show| show.name() == name)
-            .with_context(|| format!("no buffer `{name}`: color, depth or stencil"))?;
+            .with_context(|| {
+                format!("no view `{name}`: color, depth, stencil, complexity or tests")
+            })?;
         if let Some(why) = self.cannot_show(show) {
             bail!("{why}");
         }

@@ -169,7 +169,11 @@ impl<L: Lesson> App<'_, L> {
             surface,
             config,
             runner,
-            viewing: Viewing { stop, show },
+            viewing: Viewing {
+                stop,
+                show,
+                draw: self.args.draw,
+            },
             workbench,
             panel_input,
             drag_from: None,

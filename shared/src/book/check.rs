@@ -49,6 +49,7 @@ pub fn compare<L: Lesson>(
         read_depth: false,
         stop: setting.stop,
         show: setting.show,
+        draw: setting.draw,
         backend: backend.map(str::to_string),
         verbose: false,
         passes: Default::default(),

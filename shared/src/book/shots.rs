@@ -52,6 +52,8 @@ pub struct Setting {
     pub camera: Camera,
     pub show: Show,
     pub stop: Stop,
+    /// The draw a test map shows (its index in the step; `None`: every draw of the step).
+    pub draw: Option<usize>,
 }
 
 impl Setting {
@@ -70,6 +72,9 @@ impl Setting {
         }
         if let Stop::After(number) = self.stop {
             arguments.extend(["--step".to_string(), number.to_string()]);
+        }
+        if let (Show::Tests, Some(draw)) = (self.show, self.draw) {
+            arguments.extend(["--draw".to_string(), (draw + 1).to_string()]);
         }
         arguments
     }
@@ -110,6 +115,7 @@ impl BookShot {
             camera: args.camera::<L>()?,
             show: args.show::<L>(),
             stop: args.step,
+            draw: args.draw,
         })
     }
 }

@@ -1,9 +1,11 @@
 //! The GPU: setup of instance, adapter and device (honouring `WGPU_BACKEND` and `--backend`), the
 //! capture of every wgpu error, and the render targets the framework owns; the named pipeline
 //! recipes ([`states`]), the pipelines baked from them ([`pipelines`]), the pass a step draws with
-//! ([`pass`]) the pictures of the depth and stencil buffers ([`views`]) and reading
-//! buffers back ([`readback`]).
+//! ([`pass`]), the pictures of the depth and stencil buffers ([`views`]), the frame replayed as maps
+//! of its depth complexity and its draws' tests ([`maps`]) and reading buffers back ([`readback`]).
 
+pub mod fullscreen;
+pub mod maps;
 pub mod pass;
 pub mod pipelines;
 pub mod readback;
@@ -396,6 +398,20 @@ pub fn texture_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
         visibility: wgpu::ShaderStages::FRAGMENT,
         ty: wgpu::BindingType::Texture {
             sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        count: None,
+    }
+}
+
+/// A 2-D texture at `binding` that fragment shaders read texel by texel (`textureLoad`).
+pub fn texel_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: false },
             view_dimension: wgpu::TextureViewDimension::D2,
             multisampled: false,
         },

@@ -8,7 +8,7 @@
 
 use std::ops::Range;
 
-use crate::gpu::pipelines::{Pipelines, Twin};
+use crate::gpu::pipelines::{Fate, Pipelines, Twin};
 use crate::gpu::states::Recipe;
 
 /// A step's render pass.
@@ -27,8 +27,9 @@ impl<'p, 'e> Pass<'p, 'e> {
         if let Some((probe, ..)) = &mut pass.probe {
             // A new pass starts with the whole target as scissor, reference 0, constant 0.
             probe.state = State::default();
-            let (x, y) = probe.pixel;
-            pass.raw.set_scissor_rect(x, y, 1, 1);
+            if let Some((x, y)) = probe.pixel {
+                pass.raw.set_scissor_rect(x, y, 1, 1);
+            }
         }
         pass
     }
@@ -73,9 +74,12 @@ impl<'p, 'e> Pass<'p, 'e> {
     /// The scissor rectangle; while a pixel is watched, the pass keeps to that pixel, and draws
     /// whose scissor leaves it out are not drawn (they cannot reach it).
     pub fn set_scissor_rect(&mut self, x: u32, y: u32, width: u32, height: u32) {
-        match &mut self.probe {
-            Some((probe, ..)) => {
-                let (px, py) = probe.pixel;
+        let watched = self.probe.as_mut().and_then(|(probe, ..)| {
+            let pixel = probe.pixel?;
+            Some((probe, pixel))
+        });
+        match watched {
+            Some((probe, (px, py))) => {
                 probe.state.outside_scissor =
                     !(px >= x && px - x < width && py >= y && py - y < height);
             }
@@ -155,6 +159,18 @@ impl<'p, 'e> Pass<'p, 'e> {
                 }
             }
             Probing::Twin(..) => {}
+            Probing::Count | Probing::Fates { .. } => {
+                let in_step = probe.draws.iter().filter(|d| d.step == probe.step).count() - 1;
+                match whole_picture(probing, (probe.step, in_step)) {
+                    None => draw(raw),
+                    Some(twins) => {
+                        for twin in twins.into_iter().filter_map(twin) {
+                            raw.set_pipeline(&twin);
+                            draw(raw);
+                        }
+                    }
+                }
+            }
         }
         // The lesson's own pipeline and reference again, for its next draw.
         if let Some(pipeline) = &probe.state.pipeline
@@ -163,6 +179,28 @@ impl<'p, 'e> Pass<'p, 'e> {
             raw.set_pipeline(pipeline);
             raw.set_stencil_reference(probe.state.reference);
         }
+    }
+}
+
+/// How a probe of the whole picture draws the draw of index `in_step` in step `step`: as the
+/// lesson does (`None`), or as these twins — its counting twin ([`Probing::Count`]); in the step
+/// [`Probing::Fates`] maps, its fates' twins, or its quiet twin before the draw shown, or nothing
+/// after it.
+fn whole_picture(probing: Probing, (step, in_step): (usize, usize)) -> Option<Vec<Twin>> {
+    use std::cmp::Ordering::*;
+    let Probing::Fates {
+        step: mapped,
+        draw: shown,
+    } = probing
+    else {
+        return Some(vec![Twin::Count]);
+    };
+    match (step.cmp(&mapped), shown) {
+        (Less, _) => None,
+        (Equal, Some(shown)) if in_step < shown => Some(vec![Twin::Quiet]),
+        (Equal, Some(shown)) if in_step > shown => Some(Vec::new()),
+        (Equal, _) => Some(Fate::ALL.map(Twin::Fate).to_vec()),
+        (Greater, _) => Some(Vec::new()),
     }
 }
 
@@ -181,12 +219,33 @@ pub enum Probing {
     /// fragment's colour and depth and, in the stencil, how many fragments the draw has there;
     /// none after it.
     Twin(usize, u32),
+    /// The whole picture: every draw as its counting twin ([`Twin::Count`]), the stencil left
+    /// holding how many fragments reached each pixel (`--show complexity`).
+    Count,
+    /// The whole picture: the steps before `step` (its index) as the lesson draws them; in it,
+    /// `draw` (its index in the step; every draw of the step for `None`) as its fate twins
+    /// ([`Twin::Fate`]) into the test map, the step's draws before it as their quiet twins, none
+    /// after it (`--show tests`).
+    Fates { step: usize, draw: Option<usize> },
 }
 
-/// Watches one pixel through a frame: every draw of the frame's steps is counted and described,
-/// and drawn as [`Probing`] says, with the pass kept to that pixel (a 1×1 scissor).
+impl Probing {
+    /// Whether it watches the whole picture rather than one pixel.
+    pub fn whole(self) -> bool {
+        matches!(self, Probing::Count | Probing::Fates { .. })
+    }
+}
+
+/// Watches one pixel through a frame, or the whole picture: every draw of the frame's steps is
+/// counted and described, and drawn as [`Probing`] says; watching a pixel, with the pass kept to
+/// it (a 1×1 scissor).
 pub struct Probe {
-    pub pixel: (u32, u32),
+    /// The pixel watched; `None` for the whole picture ([`Probing::Count`], [`Probing::Fates`]).
+    pub pixel: Option<(u32, u32)>,
+    /// The test map the step of [`Probing::Fates`] draws into, in place of the colour target.
+    pub map: Option<wgpu::TextureView>,
+    /// Whether that step was drawn into it (not where the step drew into a lesson's own target).
+    pub map_drawn: bool,
     pub probing: Probing,
     /// Every draw met so far in this frame, in order.
     pub draws: Vec<Draw>,
@@ -205,7 +264,9 @@ impl Probe {
     pub fn new(device: &wgpu::Device, pixel: (u32, u32), draws: usize) -> Self {
         let count = (2 * draws).clamp(1, wgpu::QUERY_SET_MAX_QUERIES as usize) as u32;
         Self {
-            pixel,
+            pixel: Some(pixel),
+            map: None,
+            map_drawn: false,
             probing: Probing::Watch,
             draws: Vec::new(),
             queries: device.create_query_set(&wgpu::QuerySetDescriptor {
@@ -216,6 +277,25 @@ impl Probe {
             twin_queries: draws as u32,
             step: 0,
             state: State::default(),
+        }
+    }
+
+    /// A probe of the whole picture, as `probing` says ([`Probing::Count`] or [`Probing::Fates`],
+    /// whose test map is `map`).
+    pub fn whole(device: &wgpu::Device, probing: Probing, map: Option<wgpu::TextureView>) -> Self {
+        debug_assert!(probing.whole());
+        let mut probe = Self::new(device, (0, 0), 0);
+        probe.pixel = None;
+        probe.probing = probing;
+        probe.map = map;
+        probe
+    }
+
+    /// The test map, where the step with this index is the one [`Probing::Fates`] maps.
+    pub(crate) fn map_for(&self, step: usize) -> Option<&wgpu::TextureView> {
+        match self.probing {
+            Probing::Fates { step: mapped, .. } if mapped == step => self.map.as_ref(),
+            _ => None,
         }
     }
 
@@ -235,6 +315,15 @@ struct State {
     blend_constant: wgpu::Color,
     object: Option<&'static str>,
     outside_scissor: bool,
+}
+
+/// A draw's name in a list of its step's: `2. DRAW_REFLECTION: skull` for the draw of index 1.
+pub fn draw_name(index: usize, draw: &Draw) -> String {
+    let recipe = draw.recipe.as_ref().map_or("a pipeline", |r| r.name);
+    match draw.object {
+        Some(object) => format!("{}. {recipe}: {object}", index + 1),
+        None => format!("{}. {recipe}", index + 1),
+    }
 }
 
 /// One draw as the probe met it.

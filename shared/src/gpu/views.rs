@@ -5,6 +5,7 @@
 use wgpu::util::DeviceExt;
 
 use crate::gpu::DepthStencil;
+use crate::gpu::fullscreen::{self, Over};
 
 /// The format depth is copied into for readback.
 pub const DEPTH_COPY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
@@ -62,12 +63,11 @@ impl DepthViewPipelines {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("depth_view.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/depth_view.wgsl").into()),
-        });
+        let source = include_str!("../shaders/depth_view.wgsl");
+        let shader = fullscreen::shader(device, "depth_view.wgsl", source);
         let pipeline = |label: &str, entry: &str, format: wgpu::TextureFormat| {
-            fullscreen_pipeline(device, label, &pipeline_layout, (&shader, entry), format)
+            let target = format.into();
+            fullscreen::pipeline(device, label, &pipeline_layout, (&shader, entry), target)
         };
         Self {
             show: pipeline("SHOW_DEPTH", "fs_depth", color_format),
@@ -108,7 +108,7 @@ impl DepthViewPipelines {
             false => ("show depth", &self.show),
             true => ("show raw depth", &self.show_raw),
         };
-        fullscreen_pass(encoder, label, pipeline, color, bind_group);
+        fullscreen::draw(encoder, label, (pipeline, bind_group), color, Over::Cleared);
     }
 
     /// Copies one pixel of the depth buffer into the same pixel of `target` (R32Float, the same
@@ -120,22 +120,8 @@ impl DepthViewPipelines {
         bind_group: &wgpu::BindGroup,
         (x, y): (u32, u32),
     ) {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("copy a pixel's depth"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Load,
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let label = "copy a pixel's depth";
+        let mut pass = fullscreen::color_pass(encoder, label, target, wgpu::LoadOp::Load);
         pass.set_scissor_rect(x, y, 1, 1);
         pass.set_pipeline(&self.copy);
         pass.set_bind_group(0, bind_group, &[]);
@@ -149,84 +135,9 @@ impl DepthViewPipelines {
         target: &wgpu::TextureView,
         bind_group: &wgpu::BindGroup,
     ) {
-        fullscreen_pass(encoder, "copy depth", &self.copy, target, bind_group);
+        let pipeline = (&self.copy, bind_group);
+        fullscreen::draw(encoder, "copy depth", pipeline, target, Over::Cleared);
     }
-}
-
-/// A pipeline that draws one full-screen triangle (`vs_fullscreen`) with fragment entry `entry` into
-/// a target of `format`, with no depth or stencil.
-fn fullscreen_pipeline(
-    device: &wgpu::Device,
-    label: &str,
-    layout: &wgpu::PipelineLayout,
-    (shader, entry): (&wgpu::ShaderModule, &str),
-    format: wgpu::TextureFormat,
-) -> wgpu::RenderPipeline {
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(label),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module: shader,
-            entry_point: Some("vs_fullscreen"),
-            compilation_options: Default::default(),
-            buffers: &[],
-        },
-        fragment: Some(wgpu::FragmentState {
-            module: shader,
-            entry_point: Some(entry),
-            compilation_options: Default::default(),
-            targets: &[Some(format.into())],
-        }),
-        primitive: wgpu::PrimitiveState::default(),
-        depth_stencil: None,
-        multisample: wgpu::MultisampleState::default(),
-        multiview_mask: None,
-        cache: None,
-    })
-}
-
-/// One full-screen triangle into `target` (cleared to black first), with `pipeline` and `bind_group`.
-fn fullscreen_pass(
-    encoder: &mut wgpu::CommandEncoder,
-    label: &str,
-    pipeline: &wgpu::RenderPipeline,
-    target: &wgpu::TextureView,
-    bind_group: &wgpu::BindGroup,
-) {
-    fullscreen_pass_in(encoder, label, pipeline, target, bind_group, None);
-}
-
-/// A full-screen pass confined to `viewport` (x, y, width, height in pixels), the rest cleared.
-fn fullscreen_pass_in(
-    encoder: &mut wgpu::CommandEncoder,
-    label: &str,
-    pipeline: &wgpu::RenderPipeline,
-    target: &wgpu::TextureView,
-    bind_group: &wgpu::BindGroup,
-    viewport: Option<[f32; 4]>,
-) {
-    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-        label: Some(label),
-        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-            view: target,
-            depth_slice: None,
-            resolve_target: None,
-            ops: wgpu::Operations {
-                load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                store: wgpu::StoreOp::Store,
-            },
-        })],
-        depth_stencil_attachment: None,
-        timestamp_writes: None,
-        occlusion_query_set: None,
-        multiview_mask: None,
-    });
-    if let Some([x, y, width, height]) = viewport {
-        pass.set_viewport(x, y, width, height, 0.0, 1.0);
-    }
-    pass.set_pipeline(pipeline);
-    pass.set_bind_group(0, bind_group, &[]);
-    pass.draw(0..3, 0..1);
 }
 
 // ANCHOR: palette
@@ -259,25 +170,62 @@ pub fn stencil_colour(value: u8) -> [u8; 3] {
 }
 // ANCHOR_END: palette
 
+// ANCHOR: heat
+/// The colour of a count in `--show complexity` (sRGB): 0 black, then a ramp from dark blue
+/// through cyan, green, yellow and red to pink, [`HEAT_LEVELS`] or more white. The picture carries
+/// the scale: a box of each colour with its count, in the bottom-left corner.
+pub fn heat_colour(count: u8) -> [u8; 3] {
+    const RAMP: [[u8; 3]; HEAT_LEVELS as usize] = [
+        [0, 0, 0],
+        [40, 40, 150],
+        [30, 110, 230],
+        [20, 180, 200],
+        [40, 190, 90],
+        [170, 210, 40],
+        [250, 220, 30],
+        [250, 150, 20],
+        [235, 70, 30],
+        [200, 20, 60],
+        [220, 40, 170],
+        [255, 140, 230],
+    ];
+    RAMP.get(count as usize).copied().unwrap_or([255, 255, 255])
+}
+
+/// The first count the heat map paints white: "12+" on its scale.
+pub const HEAT_LEVELS: u8 = 12;
+// ANCHOR_END: heat
+
 /// The format the stencil values are rebuilt in for `--show stencil`: value / 255 in one byte.
 pub const STENCIL_VALUES_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R8Unorm;
 
-/// The pipelines of `--show stencil`; built once with the scene.
+/// The pipelines of `--show stencil` and `--show complexity` (the same stencil buffer, read in
+/// another palette); built once with the scene.
 pub struct StencilViewPipeline {
     /// One per bit i: passes where bit i of the stored value is set (read mask and reference 1 << i).
     bits: Vec<wgpu::RenderPipeline>,
     palette_pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
     palette: wgpu::Buffer,
+    heat: wgpu::Buffer,
+}
+
+/// How the stencil values are painted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Palette {
+    /// `--show stencil`: each value its false colour ([`stencil_colour`]).
+    Values,
+    /// `--show complexity`: each count its heat ([`heat_colour`]), with the scale.
+    Heat,
 }
 
 impl StencilViewPipeline {
     pub fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let palette = stencil_palette(device);
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("stencil_view.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/stencil_view.wgsl").into()),
-        });
+        let palette = palette_buffer(device, "stencil palette", stencil_colour, 0);
+        let boxes = HEAT_LEVELS as u32 + 1;
+        let heat = palette_buffer(device, "heat palette", heat_colour, boxes);
+        let source = include_str!("../shaders/stencil_view.wgsl");
+        let shader = fullscreen::shader(device, "stencil_view.wgsl", source);
         let bits_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("stencil bits pipeline layout"),
             bind_group_layouts: &[],
@@ -292,28 +240,29 @@ impl StencilViewPipeline {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let palette_pipeline = fullscreen_pipeline(
+        let palette_pipeline = fullscreen::pipeline(
             device,
             "STENCIL_PALETTE",
             &palette_layout,
             (&shader, "fs_palette"),
-            color_format,
+            color_format.into(),
         );
         Self {
             bits,
             palette_pipeline,
             layout,
             palette,
+            heat,
         }
     }
 
     // ANCHOR: show_stencil
-    /// Paints every pixel of `color` with the false colour of its stencil value.
+    /// Paints every pixel of `color` with the colour of its stencil value in `palette`.
     pub fn show(
         &self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
-        color: &wgpu::TextureView,
+        (color, palette): (&wgpu::TextureView, Palette),
         target: &DepthStencil,
     ) {
         // 1. Rebuild the values bit by bit: draw i passes where (1 << i) & stored == 1 << i.
@@ -362,12 +311,15 @@ impl StencilViewPipeline {
                 },
                 wgpu::BindGroupEntry {
                     binding: 1,
-                    resource: self.palette.as_entire_binding(),
+                    resource: match palette {
+                        Palette::Values => self.palette.as_entire_binding(),
+                        Palette::Heat => self.heat.as_entire_binding(),
+                    },
                 },
             ],
         });
-        let palette = &self.palette_pipeline;
-        fullscreen_pass(encoder, "stencil palette", palette, color, &bind_group);
+        let palette = (&self.palette_pipeline, &bind_group);
+        fullscreen::draw(encoder, "stencil palette", palette, color, Over::Cleared);
     }
 
     /// Rebuilds one pixel's stencil value, bit by bit as [`StencilViewPipeline::show`] does, into
@@ -416,17 +368,23 @@ impl StencilViewPipeline {
     }
 }
 
-/// The palette of `--show stencil` on the GPU: every stencil value's false colour, linear.
-fn stencil_palette(device: &wgpu::Device) -> wgpu::Buffer {
-    let colours: Vec<[f32; 4]> = (0..=255u8)
-        .map(|v| {
-            let [r, g, b] = stencil_colour(v).map(crate::gpu::srgb_to_linear);
-            [r, g, b, 1.0]
-        })
-        .collect();
+/// A palette on the GPU: every stencil value's colour, linear, then how many boxes its scale has
+/// in the picture's corner (0: no scale).
+fn palette_buffer(
+    device: &wgpu::Device,
+    label: &str,
+    colour: fn(u8) -> [u8; 3],
+    boxes: u32,
+) -> wgpu::Buffer {
+    let colours = (0..=255u8).map(|v| {
+        let [r, g, b] = colour(v).map(crate::gpu::srgb_to_linear);
+        [r, g, b, 1.0]
+    });
+    let scale = [boxes as f32, 0.0, 0.0, 0.0];
+    let contents: Vec<[f32; 4]> = colours.chain([scale]).collect();
     device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("stencil palette"),
-        contents: bytemuck::cast_slice(&colours),
+        label: Some(label),
+        contents: bytemuck::cast_slice(&contents),
         usage: wgpu::BufferUsages::UNIFORM,
     })
 }
@@ -496,19 +454,7 @@ fn stencil_bit_pipeline(
 fn stencil_palette_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
     device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("stencil palette bind group layout"),
-        entries: &[
-            wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            },
-            crate::gpu::uniform_entry(1),
-        ],
+        entries: &[crate::gpu::texel_entry(0), crate::gpu::uniform_entry(1)],
     })
 }
 
@@ -537,12 +483,12 @@ impl Blit {
             label: Some("blit.wgsl"),
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/blit.wgsl").into()),
         });
-        let pipeline = fullscreen_pipeline(
+        let pipeline = fullscreen::pipeline(
             device,
             "SHOW_TEXTURE",
             &pipeline_layout,
             (&shader, "fs_texture"),
-            color_format,
+            color_format.into(),
         );
         let sampler = |label, filter| {
             device.create_sampler(&wgpu::SamplerDescriptor {
@@ -603,14 +549,8 @@ impl Blit {
                 },
             ],
         });
-        let label = "show texture";
-        fullscreen_pass_in(
-            encoder,
-            label,
-            &self.pipeline,
-            target,
-            &bind_group,
-            viewport,
-        );
+        let over = viewport.map_or(Over::Cleared, Over::Viewport);
+        let pipeline = (&self.pipeline, &bind_group);
+        fullscreen::draw(encoder, "show texture", pipeline, target, over);
     }
 }

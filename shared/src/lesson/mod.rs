@@ -21,7 +21,7 @@ pub mod story;
 
 use anyhow::Result;
 
-use crate::gpu::pass::{Pass, Probe};
+use crate::gpu::pass::{Pass, Probe, Probing};
 use crate::gpu::timing::StepTimer;
 use crate::gpu::{DepthStencil, Gpu, Offscreen};
 use crate::lesson::knobs::{Knob, Knobs};
@@ -193,33 +193,57 @@ impl<'a> Frame<'a> {
         }
         // A pass of its own: the frame's one pass, if open, ends first.
         self.open = None;
+        let index = self.steps.len() - 1;
         let (color, depth_stencil) = match target {
             Some(target) => (&target.color_view, &target.depth_stencil),
             None => (self.color, self.depth_stencil),
         };
-        let timestamps = self
-            .timer
-            .and_then(|timer| timer.writes(self.steps.len() - 1));
-        // A probe watches the frame's own targets, not a lesson's.
-        let probe = self.probe.as_deref_mut().filter(|_| target.is_none());
+        let timestamps = self.timer.and_then(|timer| timer.writes(index));
+        // A probe of a pixel watches the frame's own targets, not a lesson's; the complexity
+        // counts in both.
+        let probe = self
+            .probe
+            .as_deref_mut()
+            .filter(|probe| target.is_none() || probe.probing == Probing::Count);
+        // The step a test map shows draws its fates into the map, over which it is then painted.
+        let map = probe
+            .as_ref()
+            .and_then(|probe| probe.map_for(index).cloned());
+        if map.is_some() && start == Start::Cleared {
+            let targets = (Attachment::Color(color), depth_stencil);
+            drop(pass(&mut self.encoder, name, start, targets, (None, None)));
+        }
         let queries = probe.as_ref().map(|probe| &probe.queries);
+        let attachments = match &map {
+            Some(map) => (Attachment::Map(map), depth_stencil),
+            None => (Attachment::Color(color), depth_stencil),
+        };
         let mut raw = pass(
             &mut self.encoder,
             name,
             start,
-            (color, depth_stencil),
+            attachments,
             (timestamps, queries),
         );
         let probe = probe.map(|probe| {
-            probe.step = self.steps.len() - 1;
+            probe.step = index;
             (probe, &self.scene.pipelines, &self.gpu.device)
         });
         let mut pass = Pass::new(&mut raw, probe);
         self.scene.bind_frame(&mut pass);
         draw(&mut pass);
         drop(raw);
+        if let Some(map) = &map {
+            if let Some(probe) = self.probe.as_deref_mut() {
+                probe.map_drawn = true;
+            }
+            let device = &self.gpu.device;
+            self.scene
+                .test_map
+                .paint(device, &mut self.encoder, map, color);
+        }
         if let Some(after_step) = &mut self.after_step {
-            after_step(&mut self.encoder, self.steps.len() - 1, target);
+            after_step(&mut self.encoder, index, target);
         }
     }
 
@@ -237,6 +261,8 @@ impl<'a> Frame<'a> {
         let targets = (self.color, self.depth_stencil);
         let pass = self.open.get_or_insert_with(|| {
             // The pass holds the encoder until it ends: `finish` and every pass of its own end it.
+            let (color, depth_stencil) = targets;
+            let targets = (Attachment::Color(color), depth_stencil);
             pass(&mut self.encoder, "one pass", start, targets, (None, None)).forget_lifetime()
         });
         let (width, height) = self.depth_stencil.size();
@@ -274,12 +300,20 @@ enum Start {
     Kept,
 }
 
+/// What a step's pass draws its colours into.
+enum Attachment<'t> {
+    /// The frame's colour target, or the lesson's own target.
+    Color(&'t wgpu::TextureView),
+    /// A test map, cleared to white (no fate) whatever the step's start.
+    Map(&'t wgpu::TextureView),
+}
+
 /// Begins a render pass on these colour and depth-stencil targets.
 fn pass<'e>(
     encoder: &'e mut wgpu::CommandEncoder,
     label: &str,
     start: Start,
-    (color, depth_stencil): (&wgpu::TextureView, &DepthStencil),
+    (color, depth_stencil): (Attachment<'_>, &DepthStencil),
     (timestamp_writes, occlusion_query_set): (
         Option<wgpu::RenderPassTimestampWrites<'_>>,
         Option<&wgpu::QuerySet>,
@@ -293,6 +327,10 @@ fn pass<'e>(
             wgpu::LoadOp::Clear(0),
         ),
         Start::Kept => (wgpu::LoadOp::Load, wgpu::LoadOp::Load, wgpu::LoadOp::Load),
+    };
+    let (color, color_load) = match color {
+        Attachment::Color(color) => (color, color_load),
+        Attachment::Map(map) => (map, wgpu::LoadOp::Clear(wgpu::Color::WHITE)),
     };
     encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some(label),

@@ -14,11 +14,32 @@ pub enum Show {
     Stencil,
     /// The depth buffer's raw values as grey (almost all near white: see lesson 1).
     RawDepth,
+    /// The depth complexity: how many fragments every draw of the frame brought to each pixel,
+    /// counted by replaying the draws with a stencil that counts, painted as heat with its scale.
+    Complexity,
+    /// A step's test map: its draw's fragments (`--draw N`; every draw of the step without it)
+    /// painted by their fate — passed both tests, failed the depth test, failed the stencil test,
+    /// culled — over the picture as the step found it, dimmed.
+    Tests,
 }
 
 impl Show {
-    /// The three buffers a frame has, in the order `Tab` cycles them and `--film` writes them.
+    /// The three buffers a frame has.
     pub const BUFFERS: [Show; 3] = [Show::Color, Show::Depth, Show::Stencil];
+
+    /// Everything a frame can be seen as, in the order `Tab` cycles them: the buffers, then the
+    /// maps made by replaying its draws.
+    pub const VIEWS: [Show; 5] = [
+        Show::Color,
+        Show::Depth,
+        Show::Stencil,
+        Show::Complexity,
+        Show::Tests,
+    ];
+
+    /// What `--film` writes for every step: the buffers and the complexity (a test map is one
+    /// draw's, asked for by its number).
+    pub const FILM: [Show; 4] = [Show::Color, Show::Depth, Show::Stencil, Show::Complexity];
 
     /// The name `--show` takes.
     pub fn name(self) -> &'static str {
@@ -27,15 +48,24 @@ impl Show {
             Show::Depth => "depth",
             Show::Stencil => "stencil",
             Show::RawDepth => "raw-depth",
+            Show::Complexity => "complexity",
+            Show::Tests => "tests",
         }
     }
 
-    /// The next of the three buffers (`Tab` in the window).
+    /// Whether it is a map made by replaying the frame's draws (not a buffer the frame fills).
+    pub fn is_map(self) -> bool {
+        matches!(self, Show::Complexity | Show::Tests)
+    }
+
+    /// The next view (`Tab` in the window).
     pub fn next(self) -> Show {
         match self {
             Show::Color => Show::Depth,
             Show::Depth => Show::Stencil,
-            Show::Stencil | Show::RawDepth => Show::Color,
+            Show::Stencil => Show::Complexity,
+            Show::Complexity => Show::Tests,
+            Show::Tests | Show::RawDepth => Show::Color,
         }
     }
 }

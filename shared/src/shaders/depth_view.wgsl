@@ -9,13 +9,6 @@ struct Planes {
 @group(0) @binding(0) var depth_buffer: texture_depth_2d;
 @group(0) @binding(1) var<uniform> planes: Planes;
 
-@vertex
-fn vs_fullscreen(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f32> {
-    // One triangle that covers the screen.
-    let uv = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u));
-    return vec4<f32>(uv * 2.0 - 1.0, 0.0, 1.0);
-}
-
 // ANCHOR: linearise
 // wgpu's projection maps view distance z in [near, far] to depth d = far (z - near) / (z (far - near)),
 // so z = near far / (far - d (far - near)). No `* 2 - 1` step: wgpu's depth range is 0..1, not GL's -1..1.

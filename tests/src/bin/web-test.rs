@@ -838,6 +838,9 @@ fn set_up(page: &LivePage, shot: &BookShot) -> Result<()> {
         workbook::Stop::After(number) => number,
     })?;
     page.set_show(wanted.show.name())?;
+    if wanted.show == workbook::Show::Tests {
+        page.set_draw(wanted.draw.map_or(0, |draw| draw + 1))?;
+    }
     match &args.camera {
         Some(pose) => page.set_camera(pose),
         None => page.reset_camera(),

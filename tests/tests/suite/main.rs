@@ -16,6 +16,7 @@ mod fuzz;
 mod heap;
 mod knobs;
 mod lessons;
+mod maps;
 mod mark_mirror;
 mod outline;
 mod panel;

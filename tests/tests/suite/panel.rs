@@ -29,6 +29,8 @@ fn harness(
             steps: &steps,
             step: 2,
             show: Show::Color,
+            draws: &[],
+            draw: None,
             can_show_depth: true,
             thumbnails: None,
             cost: cost.as_ref(),

@@ -38,6 +38,8 @@ struct Reading {
     /// The step the frame stops after (from 1; the step count for the whole frame).
     step: usize,
     setting: Setting,
+    /// The draws of that step, named, where its test map is shown.
+    draws: Vec<String>,
 }
 
 /// The panel of this frame: where it leaves the view, and what egui painted and asked, unless
@@ -137,11 +139,36 @@ impl<L: Lesson> Workbench<L> {
         let step = viewing.stop.resolve(&steps).unwrap_or(steps.len());
         let setting = setting(runner, viewing);
         self.follow_book(&setting);
+        let draws = match viewing.show {
+            Show::Tests => self.step_draws(runner, step),
+            _ => Vec::new(),
+        };
         Reading {
             steps,
             step,
             setting,
+            draws,
         }
+    }
+
+    /// The draws of step `step` (from 1) as the test map's choice names them, kept while the
+    /// knobs and the step stay (listing them records a frame).
+    fn step_draws(&mut self, runner: &Runner<L>, step: usize) -> Vec<String> {
+        let key = (runner.knobs.clone(), step);
+        if let Some((made_for, draws)) = &self.draws
+            && *made_for == key
+        {
+            return draws.clone();
+        }
+        let all = crate::app::pixel::draws(runner, &self.buffers.views[0]);
+        let draws: Vec<String> = all
+            .iter()
+            .filter(|draw| draw.step + 1 == step)
+            .enumerate()
+            .map(|(index, draw)| crate::gpu::pass::draw_name(index, draw))
+            .collect();
+        self.draws = Some((key, draws.clone()));
+        draws
     }
 
     /// What the panel shows, from the reading and the workbench's state.
@@ -154,6 +181,8 @@ impl<L: Lesson> Workbench<L> {
             steps: &reading.steps,
             step: reading.step,
             show: reading.setting.show,
+            draws: &reading.draws,
+            draw: reading.setting.draw,
             can_show_depth: runner.can_show(Show::Depth),
             thumbnails: Some((self.ids, aspect)),
             cost: self.shown_cost.as_ref(),
@@ -316,9 +345,10 @@ impl<L: Lesson> Workbench<L> {
             due,
             pictures: due || viewing.show != Show::Color,
             shown: match viewing.show {
-                Show::Color => 0,
+                Show::Color | Show::Tests => 0,
                 Show::Depth | Show::RawDepth => 1,
                 Show::Stencil => 2,
+                Show::Complexity => 3,
             },
             copy_view,
             panel,
@@ -378,7 +408,7 @@ impl<L: Lesson> Workbench<L> {
         layout: &mut Layout,
         target: &wgpu::Texture,
     ) -> Result<(Vec<&'static str>, bool)> {
-        let [color, depth, stencil] = &self.buffers.views;
+        let [color, depth, stencil, complexity] = &self.buffers.views;
         let timer = match &mut self.timer {
             Some(timer) if plan.due => Some(timer.for_next_frame(&runner.gpu.device)?),
             _ => None,
@@ -388,8 +418,14 @@ impl<L: Lesson> Workbench<L> {
         if plan.pictures {
             let raw_depth = viewing.show == Show::RawDepth;
             request = request.pictures([depth, stencil], raw_depth);
+            request = request.complexity(complexity);
         }
-        let request = request.show(Show::Color, color).timed(timer);
+        let request = match viewing.show {
+            Show::Tests => request.show(Show::Tests, color).draw(viewing.draw),
+            Show::Complexity => request.show(Show::Complexity, complexity),
+            _ => request.show(Show::Color, color),
+        };
+        let request = request.timed(timer);
         let Recorded { mut encoder, steps } = runner.record(request)?;
         self.steps = Some(((runner.knobs.clone(), runner.camera), steps.clone()));
         if plan.due {

@@ -53,6 +53,7 @@ impl<L: Lesson> HeadlessWorkbench<L> {
             viewing: Viewing {
                 stop: args.step,
                 show: args.show::<L>(),
+                draw: args.draw,
             },
             target,
             size: args.size,
@@ -116,8 +117,8 @@ impl<L: Lesson> HeadlessWorkbench<L> {
         self.workbench.visible = shown;
     }
 
-    /// Where the frame stops and what it shows.
-    pub fn view(&mut self, stop: Stop, show: Show) {
-        self.viewing = Viewing { stop, show };
+    /// Where the frame stops and what it shows (with the draw a test map shows).
+    pub fn view(&mut self, stop: Stop, show: Show, draw: Option<usize>) {
+        self.viewing = Viewing { stop, show, draw };
     }
 }

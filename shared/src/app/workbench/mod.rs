@@ -43,6 +43,8 @@ const PICTURES_EVERY_S: f64 = 0.5;
 pub struct Viewing {
     pub stop: Stop,
     pub show: Show,
+    /// The draw a test map shows (its index in the step), or every draw of the step.
+    pub draw: Option<usize>,
 }
 
 pub struct Workbench<L: Lesson> {
@@ -50,7 +52,9 @@ pub struct Workbench<L: Lesson> {
     ctx: egui::Context,
     painter: PanelPainter,
     buffers: Buffers,
-    ids: [egui::TextureId; 3],
+    ids: [egui::TextureId; 4],
+    /// The named draws of a step, for the test map's choice, and the knobs and step they are of.
+    draws: Option<((Knobs, usize), Vec<String>)>,
     timer: Option<LateTimer>,
     cost: Option<Cost>,
     /// The cost as the panel shows it: the latest, twice a second.
@@ -143,6 +147,7 @@ impl<L: Lesson> Workbench<L> {
             painter,
             buffers,
             ids,
+            draws: None,
             timer: LateTimer::new(gpu),
             cost: None,
             shown_cost: None,
@@ -261,16 +266,17 @@ impl<L: Lesson> Workbench<L> {
     pub fn draw_alone(
         &mut self,
         runner: &mut Runner<L>,
-        Viewing { stop, show }: Viewing,
+        Viewing { stop, show, draw }: Viewing,
         target: &wgpu::TextureView,
         size: (u32, u32),
     ) -> Result<()> {
+        let asked = (stop, show, draw);
         if !self.half_resolution {
-            return runner.draw_alone(target, size, stop, show);
+            return runner.draw_alone(target, size, asked);
         }
         let half = (size.0.div_ceil(2), size.1.div_ceil(2));
         let picture = self.half_picture.at(&runner.gpu.device, half);
-        runner.draw_through((&picture, half), target, stop, show)
+        runner.draw_through((&picture, half), target, asked)
     }
 
     /// Draws the lesson at half the view's resolution, or at full (`R`, the panel's box).
@@ -308,8 +314,10 @@ impl<L: Lesson> Workbench<L> {
                 } else {
                     Stop::After(number)
                 };
+                viewing.draw = None;
             }
             Action::Show(show) => viewing.show = show,
+            Action::Draw(draw) => viewing.draw = draw,
             Action::Camera(pose) => {
                 runner.camera = pose;
                 self.shown_camera = None;
@@ -328,6 +336,7 @@ impl<L: Lesson> Workbench<L> {
                 *viewing = Viewing {
                     stop: setting.stop,
                     show: setting.show,
+                    draw: setting.draw,
                 };
             }
             Action::ShowDifference(shown) => self.show_difference = shown,
@@ -431,6 +440,7 @@ fn setting<L: Lesson>(runner: &Runner<L>, viewing: Viewing) -> Setting {
         camera: runner.camera,
         show: viewing.show,
         stop: viewing.stop,
+        draw: viewing.draw,
     }
 }
 

@@ -73,24 +73,9 @@ impl PanelPainter {
             .renderer
             .update_buffers(device, queue, encoder, &jobs, &screen);
         queue.submit(commands);
-        let mut pass = encoder
-            .begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("workbench panel"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: target,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Load,
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            })
-            .forget_lifetime();
+        let load = wgpu::LoadOp::Load;
+        let pass = crate::gpu::fullscreen::color_pass(encoder, "workbench panel", target, load);
+        let mut pass = pass.forget_lifetime();
         self.renderer.render(&mut pass, &jobs, &screen);
     }
 

@@ -21,6 +21,8 @@ pub enum Action {
     /// Stop the frame after step `number` (from 1).
     Step(usize),
     Show(Show),
+    /// Show the test map of this draw of the step (from 0), or of every draw in it.
+    Draw(Option<usize>),
     Camera(Camera),
     PrintCamera,
     CopyCamera,
@@ -83,10 +85,14 @@ pub struct Model<'a> {
     /// The step the frame stops after, from 1.
     pub step: usize,
     pub show: Show,
+    /// The step's draws, named, where its test map is shown; the one shown (`None`: every one).
+    pub draws: &'a [String],
+    pub draw: Option<usize>,
     /// Whether this backend can show the depth buffer (GL cannot).
     pub can_show_depth: bool,
-    /// The colour, depth and stencil pictures at the current step, and the view's aspect ratio.
-    pub thumbnails: Option<([TextureId; 3], f32)>,
+    /// The colour, depth, stencil and complexity pictures at the current step, and the view's
+    /// aspect ratio.
+    pub thumbnails: Option<([TextureId; 4], f32)>,
     pub cost: Option<&'a Cost>,
     /// The adapter's name and backend.
     pub adapter: &'a str,
@@ -208,20 +214,25 @@ fn steps(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
             actions.push(Action::Step(number));
         }
     }
-    ui.horizontal(|ui| {
-        for show in [Show::Color, Show::Depth, Show::Stencil, Show::RawDepth] {
-            let enabled = show == Show::Color || show == Show::Stencil || model.can_show_depth;
+    ui.horizontal_wrapped(|ui| {
+        for show in Show::VIEWS.into_iter().chain([Show::RawDepth]) {
+            let depth = matches!(show, Show::Depth | Show::RawDepth);
+            let enabled = !depth || model.can_show_depth;
             let button = egui::Button::selectable(model.show == show, show.name());
             if ui.add_enabled(enabled, button).clicked() && model.show != show {
                 actions.push(Action::Show(show));
             }
         }
     });
+    if model.show == Show::Tests {
+        test_map(ui, model, actions);
+    }
     if let Some((ids, aspect)) = model.thumbnails {
-        let width = (ui.available_width() - 2.0 * ui.spacing().item_spacing.x) / 3.0;
+        let width = (ui.available_width() - 3.0 * ui.spacing().item_spacing.x) / 4.0;
         let size = egui::vec2(width, width / aspect.max(0.1));
         ui.horizontal(|ui| {
-            for (id, show) in ids.into_iter().zip(Show::BUFFERS) {
+            let shows = [Show::Color, Show::Depth, Show::Stencil, Show::Complexity];
+            for (id, show) in ids.into_iter().zip(shows) {
                 ui.vertical(|ui| {
                     let image = egui::Image::new((id, size)).sense(egui::Sense::click());
                     let response = ui.add(image).on_hover_text(format!("show {}", show.name()));
@@ -236,6 +247,38 @@ fn steps(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
             ui.label("This backend cannot read the depth buffer in a shader: no depth picture.");
         }
     }
+}
+
+/// The test map's draw (every draw of the step, or one) and what its colours mean.
+fn test_map(ui: &mut Ui, model: &Model<'_>, actions: &mut Vec<Action>) {
+    let name = |draw: Option<usize>| match draw {
+        None => "every draw of the step".to_string(),
+        Some(index) => model.draws.get(index).cloned().unwrap_or_default(),
+    };
+    egui::ComboBox::from_label("draw")
+        .selected_text(name(model.draw))
+        .show_ui(ui, |ui| {
+            let choices = std::iter::once(None).chain((0..model.draws.len()).map(Some));
+            for choice in choices {
+                let chosen = ui.selectable_label(model.draw == choice, name(choice));
+                if chosen.clicked() && model.draw != choice {
+                    actions.push(Action::Draw(choice));
+                }
+            }
+        });
+    ui.horizontal_wrapped(|ui| {
+        use crate::gpu::pipelines::Fate;
+        let fates = [
+            (Fate::Passes, "passed"),
+            (Fate::DepthFails, "failed depth"),
+            (Fate::StencilFails, "failed stencil"),
+            (Fate::Culled, "culled"),
+        ];
+        for (fate, text) in fates {
+            let [r, g, b] = crate::gpu::maps::fate_colour(fate);
+            ui.label(RichText::new(format!("■ {text}")).color(egui::Color32::from_rgb(r, g, b)));
+        }
+    });
 }
 
 /// The picked pixel's story (`--pixel`): each step's values there, the steps that changed it

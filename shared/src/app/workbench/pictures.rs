@@ -1,16 +1,17 @@
 //! The workbench's own pictures: the view's three buffers, painted to be seen (egui shows them as
 //! thumbnails and the view is one of them), and the panel as last painted.
 
-/// The three buffers of the view, painted to be seen, each an egui texture.
+/// The three buffers of the view and its depth complexity, painted to be seen, each an egui
+/// texture.
 pub(super) struct Buffers {
     pub(super) size: (u32, u32),
-    /// Colour, depth, stencil pictures (copied into the window, and a pixel's story reads the
-    /// colours through the first).
-    pub(super) textures: [wgpu::Texture; 3],
+    /// Colour, depth, stencil and complexity pictures (copied into the window, and a pixel's story
+    /// reads the colours through the first).
+    pub(super) textures: [wgpu::Texture; 4],
     /// Views of the same.
-    pub(super) views: [wgpu::TextureView; 3],
+    pub(super) views: [wgpu::TextureView; 4],
     /// The same, as egui samples them (sRGB-encoded values, not decoded).
-    pub(super) encoded: [wgpu::TextureView; 3],
+    pub(super) encoded: [wgpu::TextureView; 4],
 }
 
 /// The panel as last painted, to be copied into frames in which it did not change.
@@ -102,6 +103,7 @@ impl Buffers {
             texture("workbench colour", usage),
             texture("workbench depth picture", usage),
             texture("workbench stencil picture", usage),
+            texture("workbench complexity picture", usage),
         ];
         Self {
             size,

@@ -37,6 +37,7 @@ pub use room::{
 };
 
 use crate::Gpu;
+use crate::gpu::maps::TestMapView;
 use crate::gpu::pass::Pass;
 use crate::gpu::pipelines::Pipelines;
 use crate::gpu::views::{Blit, DepthViewPipelines, StencilViewPipeline};
@@ -103,6 +104,7 @@ pub struct Scene {
     pub(crate) depth_view: Option<DepthViewPipelines>,
     pub(crate) stencil_view: StencilViewPipeline,
     pub(crate) blit: Blit,
+    pub(crate) test_map: TestMapView,
     /// Every pipeline baked for the lesson, with its recipe (a pixel's story names them).
     pub pipelines: Pipelines,
 }
@@ -216,6 +218,7 @@ impl Scene {
             depth_view,
             stencil_view: StencilViewPipeline::new(device, color_format),
             blit: Blit::new(device, color_format),
+            test_map: TestMapView::new(color_format),
             pipelines: Pipelines::default(),
         }
     }
