@@ -6,6 +6,7 @@
 use std::cell::{Ref, RefCell};
 
 use workbook::gpu::pipelines::Stages;
+use workbook::gpu::states::KEEP_IF_EQUAL;
 use workbook::gpu::{Offscreen, states, texture_entry};
 use workbook::wgpu::{self, ColorWrites, CompareFunction};
 use workbook::{Frame, Gpu, Pass, Recipe, Scene};
@@ -51,10 +52,6 @@ pub const EDGE_IN_MIRROR: Recipe = Recipe {
     ..EDGE
 };
 
-const KEEP_IF_EQUAL: wgpu::StencilFaceState = wgpu::StencilFaceState {
-    compare: CompareFunction::Equal,
-    ..wgpu::StencilFaceState::IGNORE
-};
 // ANCHOR_END: recipes
 
 pub struct ScreenSpace {

@@ -136,7 +136,7 @@ pub const DRAW_REFLECTION: Recipe = Recipe {
 };
 
 /// The stencil test passes where the stored value equals the reference; nothing is written.
-const KEEP_IF_EQUAL: StencilFaceState = StencilFaceState {
+pub const KEEP_IF_EQUAL: StencilFaceState = StencilFaceState {
     compare: CompareFunction::Equal,
     fail_op: StencilOperation::Keep,
     depth_fail_op: StencilOperation::Keep,

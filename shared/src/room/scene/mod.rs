@@ -107,6 +107,8 @@ pub struct Scene {
     pub(crate) test_map: TestMapView,
     /// Every pipeline baked for the lesson, with its recipe (a pixel's story names them).
     pub pipelines: Pipelines,
+    /// The shaders made by [`Scene::shader_with`], by the lesson's own WGSL in them.
+    lesson_shaders: std::sync::Mutex<std::collections::HashMap<String, wgpu::ShaderModule>>,
 }
 
 impl SceneOptions {
@@ -220,6 +222,7 @@ impl Scene {
             blit: Blit::new(device, color_format),
             test_map: TestMapView::new(color_format),
             pipelines: Pipelines::default(),
+            lesson_shaders: Default::default(),
         }
     }
 

@@ -88,19 +88,27 @@ impl Scene {
 
     /// The scene's shader with `extra` WGSL of a lesson's own appended: entry points that use the
     /// scene's structs, bindings and functions (`transform`, `shade`). Bake pipelines with it by
-    /// [`Scene::pipeline_in`].
+    /// [`Scene::pipeline_in`]. Made once for each `extra`: a lesson that asks again (for another
+    /// recipe, or rebuilt for new knob values) gets the module it got before.
     pub fn shader_with(
         &self,
         device: &wgpu::Device,
         label: &str,
         extra: &str,
     ) -> wgpu::ShaderModule {
-        device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(label),
-            source: wgpu::ShaderSource::Wgsl(
-                format!("{}\n{extra}", include_str!("../../shaders/scene.wgsl")).into(),
-            ),
-        })
+        let mut made = self
+            .lesson_shaders
+            .lock()
+            .unwrap_or_else(|p| p.into_inner());
+        let module = made.entry(extra.to_string()).or_insert_with(|| {
+            device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(label),
+                source: wgpu::ShaderSource::Wgsl(
+                    format!("{}\n{extra}", include_str!("../../shaders/scene.wgsl")).into(),
+                ),
+            })
+        });
+        module.clone()
     }
 
     /// Bakes a recipe into a pipeline that draws the room's objects (the scene's bindings and

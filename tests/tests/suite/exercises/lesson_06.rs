@@ -4,12 +4,13 @@
 //! (the sky, mostly), not over the reflection; the tinted glass mixes each channel by its own constant.
 
 use workbook::app::headless::{self, Capture, Request};
-use workbook::gpu::{linear_to_srgb, srgb_to_linear};
 use workbook::{Lesson, Stop};
 
 use lessons::exercises::transparent_mirror::{exercise_1, exercise_2};
 use lessons::transparent_mirror;
 use lessons::winding_fix;
+
+use super::blend;
 
 const W: u32 = 320;
 const H: u32 = 180;
@@ -39,13 +40,6 @@ fn mirror_pixels(capture: &Capture) -> Vec<(u32, u32)> {
         .flat_map(|y| (1..W - 1).map(move |x| (x, y)))
         .filter(|&(x, y)| (0..3).all(|dy| (0..3).all(|dx| marked(x + dx - 1, y + dy - 1))))
         .collect()
-}
-
-/// k·top + (1 − k)·under for each channel, in linear light, encoded back to sRGB.
-fn blend(top: [u8; 3], under: [u8; 3], k: [f32; 3]) -> [u8; 3] {
-    std::array::from_fn(|c| {
-        linear_to_srgb(k[c] * srgb_to_linear(top[c]) + (1.0 - k[c]) * srgb_to_linear(under[c]))
-    })
 }
 
 /// How many channels of `pixels` are more than one step from `expected(x, y)`.

@@ -3,18 +3,11 @@
 //! `less` does not, and the picture is `less`'s everywhere else; the crate's band is blue all round
 //! the pixels that hold the crate's bit, while grown along its normals it has gaps at the corners.
 
-use workbook::gpu::{linear_to_srgb, srgb_to_linear};
 use workbook_tests::shots::BEHIND_THE_CRATE;
 
+use super::blend;
 use crate::outline::{Mask, SIZE, is_amber, render, render_as, rgb};
 use lessons::exercises::outline::{exercise_1, exercise_2};
-
-/// k·top + (1 − k)·under for each channel, in linear light, encoded back to sRGB.
-fn blend(top: [u8; 3], under: [u8; 3], k: f32) -> [u8; 3] {
-    std::array::from_fn(|c| {
-        linear_to_srgb(k * srgb_to_linear(top[c]) + (1.0 - k) * srgb_to_linear(under[c]))
-    })
-}
 
 fn close(a: [u8; 3], b: [u8; 3]) -> bool {
     a.iter().zip(b).all(|(&a, b)| a.abs_diff(b) <= 1)
@@ -33,7 +26,7 @@ fn the_hidden_band_is_dimmed_and_the_rest_is_as_less_draws_it() {
             true => blend(
                 crate::outline::AMBER,
                 rgb(&less, i),
-                exercise_1::DIMMED as f32,
+                [exercise_1::DIMMED as f32; 3],
             ),
             false => rgb(&less, i),
         };

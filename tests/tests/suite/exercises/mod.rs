@@ -16,3 +16,13 @@ mod lesson_10;
 mod lesson_11;
 mod lesson_12;
 mod lesson_13;
+
+use workbook::gpu::{linear_to_srgb, srgb_to_linear};
+
+/// k·top + (1 − k)·under for each channel, in linear light, encoded back to sRGB: what blending
+/// with factors k and 1 − k stores.
+fn blend(top: [u8; 3], under: [u8; 3], k: [f32; 3]) -> [u8; 3] {
+    std::array::from_fn(|c| {
+        linear_to_srgb(k[c] * srgb_to_linear(top[c]) + (1.0 - k[c]) * srgb_to_linear(under[c]))
+    })
+}
