@@ -28,9 +28,14 @@ impl View {
 
     /// The ray from the eye through the centre of pixel (x, y): origin on the near plane, unit direction.
     pub fn ray(&self, x: u32, y: u32) -> (Vec3, Vec3) {
+        self.ray_at(x as f32 + 0.5, y as f32 + 0.5)
+    }
+
+    /// The ray from the eye through a point of the picture, in pixels from its top left corner.
+    pub fn ray_at(&self, x: f32, y: f32) -> (Vec3, Vec3) {
         let inverse = self.view_projection().inverse();
-        let ndc_x = (x as f32 + 0.5) / self.width as f32 * 2.0 - 1.0;
-        let ndc_y = 1.0 - (y as f32 + 0.5) / self.height as f32 * 2.0;
+        let ndc_x = x / self.width as f32 * 2.0 - 1.0;
+        let ndc_y = 1.0 - y / self.height as f32 * 2.0;
         let unproject = |z: f32| {
             let p = inverse * glam::Vec4::new(ndc_x, ndc_y, z, 1.0);
             p.xyz() / p.w
@@ -113,4 +118,98 @@ pub fn hit_box(origin: Vec3, direction: Vec3, min: Vec3, max: Vec3) -> Option<f3
 pub fn passes_near(origin: Vec3, direction: Vec3, centre: Vec3, radius: f32) -> bool {
     let along = (centre - origin).dot(direction);
     (origin + direction * along).distance(centre) < radius
+}
+
+/// Where a ray meets a triangle (Möller–Trumbore): the distance along it, for a hit in front of
+/// the origin. Both faces count.
+pub fn hit_triangle(origin: Vec3, direction: Vec3, [a, b, c]: [Vec3; 3]) -> Option<f32> {
+    let (ab, ac) = (b - a, c - a);
+    let p = direction.cross(ac);
+    let determinant = ab.dot(p);
+    if determinant.abs() < 1e-12 {
+        return None;
+    }
+    let inverse = 1.0 / determinant;
+    let t_vec = origin - a;
+    let u = t_vec.dot(p) * inverse;
+    let q = t_vec.cross(ab);
+    let v = direction.dot(q) * inverse;
+    let t = ac.dot(q) * inverse;
+    (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0).then_some(t)
+}
+
+/// A triangle mesh in the world, ready for rays: a bounding-volume hierarchy over its triangles
+/// (each node a box; leaves of a few triangles), so that a ray tests tens of triangles, not all.
+pub struct Mesh {
+    pub triangles: Vec<[Vec3; 3]>,
+    /// (box min, box max, children or leaf): a leaf holds a range of `triangles`.
+    nodes: Vec<(Vec3, Vec3, Node)>,
+}
+
+enum Node {
+    Inner(usize, usize),
+    Leaf(usize, usize),
+}
+
+impl Mesh {
+    /// The mesh of `data` placed by `world`.
+    pub fn new(data: &workbook::room::mesh::MeshData, world: Mat4) -> Self {
+        let point = |i: u32| world.transform_point3(Vec3::from(data.vertices[i as usize].position));
+        let triangles = (data.indices.chunks_exact(3))
+            .map(|t| [point(t[0]), point(t[1]), point(t[2])])
+            .collect();
+        let mut mesh = Self {
+            triangles,
+            nodes: Vec::new(),
+        };
+        let count = mesh.triangles.len();
+        mesh.build(0, count);
+        mesh
+    }
+
+    fn build(&mut self, start: usize, end: usize) -> usize {
+        let corners = self.triangles[start..end].iter().flatten();
+        let (min, max) = corners.fold((Vec3::MAX, Vec3::MIN), |(lo, hi), p| {
+            (lo.min(*p), hi.max(*p))
+        });
+        let index = self.nodes.len();
+        self.nodes.push((min, max, Node::Leaf(start, end)));
+        if end - start > 8 {
+            let axis = (max - min).max_position();
+            let centre = |t: &[Vec3; 3]| (t[0] + t[1] + t[2])[axis];
+            self.triangles[start..end].sort_by(|a, b| centre(a).total_cmp(&centre(b)));
+            let middle = (start + end) / 2;
+            let left = self.build(start, middle);
+            let right = self.build(middle, end);
+            self.nodes[index].2 = Node::Inner(left, right);
+        }
+        index
+    }
+
+    /// The nearest hit along the ray, closer than `limit`: its distance and its triangle.
+    pub fn hit(&self, origin: Vec3, direction: Vec3, limit: f32) -> Option<(f32, [Vec3; 3])> {
+        let mut best: Option<(f32, [Vec3; 3])> = None;
+        let mut stack = vec![0];
+        while let Some(node) = stack.pop() {
+            let (min, max, ref kind) = self.nodes[node];
+            let nearest = best.map_or(limit, |(t, _)| t);
+            match hit_box(origin, direction, min, max) {
+                Some(t) if t < nearest => {}
+                _ => continue,
+            }
+            match *kind {
+                Node::Inner(left, right) => stack.extend([left, right]),
+                Node::Leaf(start, end) => {
+                    for triangle in &self.triangles[start..end] {
+                        if let Some(t) = hit_triangle(origin, direction, *triangle)
+                            && t < best.map_or(limit, |(b, _)| b)
+                        {
+                            best = Some((t, *triangle));
+                        }
+                    }
+                }
+            }
+        }
+        best
+    }
 }

@@ -18,7 +18,7 @@ use crate::gpu::pass::{Draw, Probe, Probing};
 use crate::gpu::readback::read_buffer;
 use crate::gpu::views::{DEPTH_COPY_FORMAT, STENCIL_VALUES_FORMAT};
 use crate::lesson::Lesson;
-use crate::lesson::story::{DrawStory, Fragment, StepStory, Story, Texel};
+use crate::lesson::story::{self, DrawStory, Fragment, StepStory, Story, Texel};
 
 /// Where one read pixel lies in the readback buffer: a slot each, colour at 0, depth at 4, stencil
 /// at 8.
@@ -74,13 +74,19 @@ pub async fn tell<L: Lesson>(
         .flat_map(|&k| [Probing::Until(k), Probing::Twin(k, 0)])
         .collect();
     let first = teller.read(&runs).await?;
-    // 3. The other fragments of draws whose triangles overlap at the pixel.
+    // 3. The other fragments of draws whose triangles overlap at the pixel; and for a draw whose
+    // faces have stencil states of their own, which face each fragment lies on.
+    let draws = &watched.draws;
+    let two_sided = |k: usize| draws[k].recipe.as_ref().is_some_and(story::two_sided);
     let more: Vec<Probing> = reaching
         .iter()
         .enumerate()
         .flat_map(|(slot, &k)| {
             let count = first[2 * slot + 1].stencil.min(MAX_FRAGMENTS) as u32;
-            (1..count).map(move |fragment| Probing::Twin(k, fragment))
+            let facing = (0..count).filter(move |_| two_sided(k));
+            (1..count)
+                .map(move |fragment| Probing::Twin(k, fragment))
+                .chain(facing.map(move |fragment| Probing::Facing(k, fragment)))
         })
         .collect();
     let others = teller.read(&more).await?;
@@ -288,11 +294,17 @@ impl Reads {
             })
             .collect();
         twins.sort_by_key(|(fragment, _)| *fragment);
+        let facing = |f: u32| {
+            (self.runs.iter().zip(&self.read))
+                .find(|(probing, _)| **probing == Probing::Facing(k, f))
+                .map(|(_, texel)| texel.color[0] > 127)
+        };
         twins
             .into_iter()
-            .map(|(_, texel)| Fragment {
+            .map(|(f, texel)| Fragment {
                 color: texel.color,
                 depth: texel.depth,
+                front: facing(f),
             })
             .collect()
     }

@@ -147,9 +147,10 @@ impl<'p, 'e> Pass<'p, 'e> {
                     draw(raw);
                 }
             }
-            Probing::Twin(k, _) if index < k && !outside => draw(raw),
-            Probing::Twin(k, fragment) if index == k && !outside => {
-                if let (Some(zero), Some(select)) = (twin(Twin::Zero), twin(Twin::Select)) {
+            Probing::Twin(k, _) | Probing::Facing(k, _) if index < k && !outside => draw(raw),
+            Probing::Twin(k, fragment) | Probing::Facing(k, fragment) if index == k && !outside => {
+                let select = twin(probing.selecting());
+                if let (Some(zero), Some(select)) = (twin(Twin::Zero), select) {
                     raw.set_pipeline(&zero);
                     raw.set_stencil_reference(0);
                     draw(raw);
@@ -158,7 +159,7 @@ impl<'p, 'e> Pass<'p, 'e> {
                     draw(raw);
                 }
             }
-            Probing::Twin(..) => {}
+            Probing::Twin(..) | Probing::Facing(..) => {}
             Probing::Count | Probing::Fates { .. } => {
                 let in_step = probe.draws.iter().filter(|d| d.step == probe.step).count() - 1;
                 match whole_picture(probing, (probe.step, in_step)) {
@@ -219,6 +220,9 @@ pub enum Probing {
     /// fragment's colour and depth and, in the stencil, how many fragments the draw has there;
     /// none after it.
     Twin(usize, u32),
+    /// [`Probing::Twin`] with [`Twin::Facing`] for [`Twin::Select`]: the pixel is left white if
+    /// that fragment lies on a front face, black if on a back face.
+    Facing(usize, u32),
     /// The whole picture: every draw as its counting twin ([`Twin::Count`]), the stencil left
     /// holding how many fragments reached each pixel (`--show complexity`).
     Count,
@@ -230,6 +234,14 @@ pub enum Probing {
 }
 
 impl Probing {
+    /// The twin that selects one fragment: [`Twin::Facing`] for [`Probing::Facing`].
+    fn selecting(self) -> Twin {
+        match self {
+            Probing::Facing(..) => Twin::Facing,
+            _ => Twin::Select,
+        }
+    }
+
     /// Whether it watches the whole picture rather than one pixel.
     pub fn whole(self) -> bool {
         matches!(self, Probing::Count | Probing::Fates { .. })

@@ -39,6 +39,10 @@ pub enum Twin {
     /// depth of the one that finds the stencil equal to the reference: fragment `reference`, in
     /// the order the GPU meets them.
     Select,
+    /// [`Twin::Select`] with a fragment shader that writes which side of its triangle the
+    /// selected fragment is on: white for the front face, black for the back. A recipe with a
+    /// stencil state for each face (a shadow volume's count) needs it to tell the fragment's story.
+    Facing,
     /// Counts every fragment the draw makes, whatever the tests would say: the stencil
     /// incremented (clamped at 255), no depth test, nothing else written. `--show complexity`
     /// replays the frame's draws as these.
@@ -97,8 +101,9 @@ impl Fate {
 pub struct Pipelines {
     baked: Mutex<Vec<Baked>>,
     twins: Mutex<HashMap<(wgpu::RenderPipeline, Twin), wgpu::RenderPipeline>>,
-    /// The fragment shader of the culled fate's twins (see [`Fate::Culled`]), made once.
-    culled: std::sync::OnceLock<wgpu::ShaderModule>,
+    /// The fragment shaders of the culled fate's twins (see [`Fate::Culled`]) and of the facing
+    /// twins ([`Twin::Facing`]), made once.
+    own_fragments: std::sync::OnceLock<wgpu::ShaderModule>,
 }
 
 impl Pipelines {
@@ -147,7 +152,8 @@ impl Pipelines {
         // A culled triangle never reaches the fragment shader: its twin's shader does nothing
         // (the lesson's could discard, as a clip plane does, and leave holes in the culled area).
         let fragment = match kind {
-            Twin::Fate(Fate::Culled) => Some((self.culled_shader(device), "fs_culled")),
+            Twin::Fate(Fate::Culled) => Some((self.own_fragments(device), "fs_culled")),
+            Twin::Facing => Some((self.own_fragments(device), "fs_facing")),
             _ => None,
         };
         let twin = create(device, twin_label(kind), &twin, (&stages, fragment));
@@ -155,11 +161,11 @@ impl Pipelines {
         Some(twin)
     }
 
-    fn culled_shader(&self, device: &wgpu::Device) -> &wgpu::ShaderModule {
-        self.culled.get_or_init(|| {
+    fn own_fragments(&self, device: &wgpu::Device) -> &wgpu::ShaderModule {
+        self.own_fragments.get_or_init(|| {
             device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some("the culled fate's fragment shader"),
-                source: wgpu::ShaderSource::Wgsl(CULLED_FRAGMENT.into()),
+                label: Some("the twins' own fragment shaders"),
+                source: wgpu::ShaderSource::Wgsl(OWN_FRAGMENTS.into()),
             })
         })
     }
@@ -181,6 +187,7 @@ impl Pipelines {
 fn twin_label(kind: Twin) -> &'static str {
     match kind {
         Twin::Silent | Twin::Zero | Twin::Select => "twin of a probed draw",
+        Twin::Facing => "facing twin of a probed draw",
         Twin::Count => "COUNT_EVERY_FRAGMENT twin",
         Twin::Quiet => "QUIET twin (no colour)",
         Twin::Fate(Fate::Culled) => "CULLED twin",
@@ -224,7 +231,7 @@ pub fn twin_recipe(recipe: &Recipe, kind: Twin) -> Option<Recipe> {
             stencil: every(Always, Replace),
             ..untested
         },
-        Twin::Select => Recipe {
+        Twin::Select | Twin::Facing => Recipe {
             depth_write: true,
             stencil: every(Equal, IncrementClamp),
             color_writes: wgpu::ColorWrites::ALL,
@@ -323,10 +330,17 @@ pub fn inverse(compare: wgpu::CompareFunction) -> wgpu::CompareFunction {
     }
 }
 
-/// The fragment entry of the culled fate's twins: any colour (the blend writes 0), nothing discarded.
-const CULLED_FRAGMENT: &str = "@fragment
+/// The fragment entries of the twins that do not run the lesson's: the culled fate's (any colour,
+/// as the blend writes 0; nothing discarded), and the facing twin's (white on a front face, black
+/// on a back face).
+const OWN_FRAGMENTS: &str = "@fragment
 fn fs_culled() -> @location(0) vec4<f32> {
     return vec4<f32>(0.0);
+}
+
+@fragment
+fn fs_facing(@builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    return select(vec4<f32>(0.0, 0.0, 0.0, 1.0), vec4<f32>(1.0), front);
 }
 ";
 

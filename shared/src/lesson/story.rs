@@ -75,6 +75,15 @@ pub struct DrawStory {
 pub struct Fragment {
     pub color: [u8; 4],
     pub depth: f32,
+    /// Whether it lies on its triangle's front face; read only for a recipe whose two faces
+    /// have stencil states of their own (`None` otherwise: the front face's state serves both).
+    pub front: Option<bool>,
+}
+
+/// Whether a recipe's stencil treats front and back faces differently, so that a fragment's
+/// story must know which face it lies on.
+pub fn two_sided(recipe: &Recipe) -> bool {
+    recipe.stencil.front != recipe.stencil.back
 }
 
 /// How far the stored depth may lie from the predicted one: 16 steps of the 24-bit buffer. The twin
@@ -132,7 +141,10 @@ impl DrawStory {
     /// they choose (through the write mask), the depth write, and the colour written or blended.
     fn meet(&self, recipe: &Recipe, pixel: Texel, fragment: &Fragment) -> Outcome {
         let state = &recipe.stencil;
-        let face = &state.front;
+        let face = match fragment.front {
+            Some(false) => &state.back,
+            _ => &state.front,
+        };
         let reference = self.reference as u8;
         let verdict = if !stencil::passes(
             face.compare,
@@ -229,10 +241,17 @@ impl DrawStory {
         };
         let mut lines = vec![name];
         for (index, (fragment, outcome)) in self.fragments.iter().zip(&outcomes).enumerate() {
-            let which = match count {
+            let mut which = match count {
                 1 => "a fragment".to_string(),
                 _ => format!("fragment {} of {count}", index + 1),
             };
+            if let Some(front) = fragment.front {
+                which += if front {
+                    " (front face)"
+                } else {
+                    " (back face)"
+                };
+            }
             lines.push(format!(
                 "{which}: {} at depth {:.5}",
                 hex(fragment.color),
@@ -555,7 +574,11 @@ mod tests {
             after: before,
             fragments: fragments
                 .iter()
-                .map(|&(color, depth)| Fragment { color, depth })
+                .map(|&(color, depth)| Fragment {
+                    color,
+                    depth,
+                    front: None,
+                })
                 .collect(),
             passed: false,
         }
@@ -639,6 +662,7 @@ mod tests {
         Fragment {
             color: [200, 100, 50, 255],
             depth,
+            front: None,
         }
     }
 
@@ -786,6 +810,7 @@ mod tests {
         let half = Fragment {
             color: [255, 255, 255, 128],
             depth: 0.5,
+            front: None,
         };
         let black = Texel {
             color: [0, 0, 0, 255],

@@ -27,7 +27,7 @@ pub const TEXTURE_FILES: [&str; 6] = [
 /// The room's assets, decoded.
 pub struct Assets {
     /// The skull, or the model `--model` names.
-    pub model: MeshData,
+    pub model: std::sync::Arc<MeshData>,
     /// The textures of [`TEXTURE_FILES`], in that order, with their mipmaps.
     pub textures: [Mipmapped; 6],
 }
@@ -56,7 +56,7 @@ impl Assets {
             (model, textures)
         });
         Ok(Self {
-            model: model?,
+            model: std::sync::Arc::new(model?),
             textures: textures?.try_into().expect("one picture per texture file"),
         })
     }
@@ -70,7 +70,7 @@ impl Assets {
             decoded.push(Mipmapped::new(texture::decode_png(name, bytes)?));
         }
         Ok(Self {
-            model,
+            model: std::sync::Arc::new(model),
             textures: decoded.try_into().expect("one picture per texture file"),
         })
     }

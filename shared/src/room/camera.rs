@@ -115,6 +115,19 @@ impl Camera {
     }
     // ANCHOR_END: projection
 
+    // ANCHOR: infinity
+    /// [`Camera::projection`] with the far plane moved to infinity: points at any distance map
+    /// to depths below 1, and a point at infinity (w = 0) maps to exactly 1, which still lies
+    /// inside the clip volume (0 ≤ z ≤ w). A shadow volume extruded to infinity needs it.
+    pub fn projection_to_infinity(aspect: f32) -> Mat4 {
+        glam::camera::rh::proj::directx::perspective_infinite(
+            FOV_Y_DEGREES.to_radians(),
+            aspect,
+            NEAR,
+        )
+    }
+    // ANCHOR_END: infinity
+
     /// World to clip space.
     pub fn view_projection(&self, aspect: f32) -> Mat4 {
         Self::projection(aspect) * self.view()

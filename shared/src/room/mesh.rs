@@ -307,6 +307,64 @@ impl MeshData {
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3
     }
+
+    /// For each triangle, the triangle across each of its edges (a → b, b → c, c → a): the one that
+    /// runs along the same edge the other way, b → a, as the neighbour in a closed mesh turned one
+    /// way does; `None` across an edge of a hole. Vertices at the same place (to 0.01 mm) count as
+    /// one: a mesh splits them where its normals or texture coordinates do.
+    pub fn neighbours(&self) -> Vec<[Option<u32>; 3]> {
+        // Each vertex named by the first at its place.
+        let key = |v: &Vertex| Vec3::from(v.position) * 1e5;
+        let keys: Vec<[i64; 3]> = (self.vertices.iter())
+            .map(|v| key(v).round().as_i64vec3().to_array())
+            .collect();
+        let mut order: Vec<u32> = (0..keys.len() as u32).collect();
+        order.sort_unstable_by_key(|&i| keys[i as usize]);
+        let mut welded: Vec<u32> = (0..keys.len() as u32).collect();
+        for pair in order.windows(2) {
+            if keys[pair[0] as usize] == keys[pair[1] as usize] {
+                welded[pair[1] as usize] = welded[pair[0] as usize];
+            }
+        }
+        // Every edge, filed under the vertex it starts from: the edges from v are
+        // `from[start[v]..start[v + 1]]`, each as (the vertex it goes to, its triangle).
+        let edge = |t: usize, k: usize| {
+            let index = |k: usize| welded[self.indices[3 * t + k % 3] as usize] as usize;
+            (index(k), index(k + 1))
+        };
+        let triangles = self.triangle_count();
+        let mut start = vec![0usize; keys.len() + 1];
+        for t in 0..triangles {
+            for k in 0..3 {
+                start[edge(t, k).0 + 1] += 1;
+            }
+        }
+        for v in 0..keys.len() {
+            start[v + 1] += start[v];
+        }
+        let mut filled = start.clone();
+        let mut from = vec![(0usize, 0u32); 3 * triangles];
+        for t in 0..triangles {
+            for k in 0..3 {
+                let (a, b) = edge(t, k);
+                from[filled[a]] = (b, t as u32);
+                filled[a] += 1;
+            }
+        }
+        // Across the edge a → b: the triangle with an edge from b back to a.
+        let mut neighbours = vec![[None; 3]; triangles];
+        for (t, across) in neighbours.iter_mut().enumerate() {
+            for (k, neighbour) in across.iter_mut().enumerate() {
+                let (a, b) = edge(t, k);
+                let back = from[start[b]..start[b + 1]].iter();
+                *neighbour = back
+                    .filter(|&&(to, other)| to == a && other != t as u32)
+                    .map(|&(_, other)| other)
+                    .next();
+            }
+        }
+        neighbours
+    }
 }
 
 /// `v` scaled to unit length, if it has a direction: divided by its largest component first, so that

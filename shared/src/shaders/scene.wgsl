@@ -98,40 +98,62 @@ fn shade(in: VertexOut) -> vec4<f32> {
 // compiler leaves their code out, and it costs nothing: a software GPU runs both sides of every
 // branch, and that code took a seventh of its frame.
 fn shade_lit_by(in: VertexOut, points: bool) -> vec4<f32> {
+    let surface = surface_at(in);
+    var colour = vec3<f32>(0.0);
+    for (var i = 0; i < 3; i += 1) {
+        colour += ambient_of(frame.lights[i], surface) + direct_of(frame.lights[i], surface, points);
+    }
+    return vec4<f32>(colour, surface.alpha);
+}
+
+// A point of a surface as the lights see it: its texel, normal, position and the way to the eye.
+struct Surface {
+    texel: vec4<f32>,
+    alpha: f32,
+    n: vec3<f32>,
+    position: vec3<f32>,
+    to_eye: vec3<f32>,
+};
+
+// The surface at a fragment (discarded where the texture's alpha is under the cut-off).
+fn surface_at(in: VertexOut) -> Surface {
     let texel = textureSample(base_texture, base_sampler, in.uv);
-    let alpha = texel.a * object.diffuse.a;
     if object.params.z > 0.0 && texel.a < object.params.z {
         discard;
     }
-    let n = normalize(in.normal);
     let to_eye = normalize(frame.eye.xyz - in.world_position);
-    var ambient = vec3<f32>(0.0);
-    var diffuse = vec3<f32>(0.0);
-    var specular = vec3<f32>(0.0);
-    for (var i = 0; i < 3; i += 1) {
-        let light = frame.lights[i];
-        var to_light = -normalize(light.position.xyz);
-        var strength = 1.0;
-        if points && light.position.w > 0.5 {
-            // A point light: from where it is, fading with the distance (Luna's 1 / (a0 + a2 d²)).
-            let offset = light.position.xyz - in.world_position;
-            to_light = normalize(offset);
-            strength = 1.0 / (1.0 + 0.01 * dot(offset, offset));
-            // A spot light: only inside its cone, the edge softened over a few degrees.
-            let cut_off = light.spot.w;
-            if cut_off > -1.5 {
-                let along = dot(-to_light, normalize(light.spot.xyz));
-                strength *= smoothstep(cut_off, cut_off + 0.03, along);
-            }
-        }
-        ambient += object.ambient.rgb * light.ambient.rgb;
-        let lambert = max(dot(n, to_light), 0.0);
-        if lambert > 0.0 {
-            diffuse += strength * lambert * object.diffuse.rgb * light.diffuse.rgb;
-            let halfway = normalize(to_light + to_eye);
-            let highlight = pow(max(dot(n, halfway), 0.0), object.specular.a);
-            specular += strength * highlight * object.specular.rgb * light.specular.rgb;
+    return Surface(texel, texel.a * object.diffuse.a, normalize(in.normal), in.world_position, to_eye);
+}
+
+// What a light's ambient term adds to the surface.
+fn ambient_of(light: Light, s: Surface) -> vec3<f32> {
+    return s.texel.rgb * object.ambient.rgb * light.ambient.rgb;
+}
+
+// What a light adds to the surface where it reaches it: diffuse and specular (Blinn-Phong). Light
+// adds up: the colour of a point is the sum of these over the lights.
+fn direct_of(light: Light, s: Surface, points: bool) -> vec3<f32> {
+    var to_light = -normalize(light.position.xyz);
+    var strength = 1.0;
+    if points && light.position.w > 0.5 {
+        // A point light: from where it is, fading with the distance (Luna's 1 / (a0 + a2 d²)).
+        let offset = light.position.xyz - s.position;
+        to_light = normalize(offset);
+        strength = 1.0 / (1.0 + 0.01 * dot(offset, offset));
+        // A spot light: only inside its cone, the edge softened over a few degrees.
+        let cut_off = light.spot.w;
+        if cut_off > -1.5 {
+            let along = dot(-to_light, normalize(light.spot.xyz));
+            strength *= smoothstep(cut_off, cut_off + 0.03, along);
         }
     }
-    return vec4<f32>(texel.rgb * (ambient + diffuse) + specular, alpha);
+    let lambert = max(dot(s.n, to_light), 0.0);
+    if lambert <= 0.0 {
+        return vec3<f32>(0.0);
+    }
+    let diffuse = strength * lambert * object.diffuse.rgb * light.diffuse.rgb;
+    let halfway = normalize(to_light + s.to_eye);
+    let highlight = pow(max(dot(s.n, halfway), 0.0), object.specular.a);
+    let specular = strength * highlight * object.specular.rgb * light.specular.rgb;
+    return s.texel.rgb * diffuse + specular;
 }

@@ -85,6 +85,9 @@ pub struct Scene {
     pub mirror: Drawable,
     pub crate_box: Drawable,
     pub skull: Drawable,
+    /// The skull's mesh (or the model's) on the CPU, in its own coordinates (`skull.world()` places
+    /// it): for lessons that compute from its shape, as a shadow volume does.
+    pub skull_shape: std::sync::Arc<crate::room::mesh::MeshData>,
     /// Lesson 7's transparent objects.
     pub fence_box: Drawable,
     pub water: Drawable,
@@ -205,6 +208,7 @@ impl Scene {
             mirror: objects.mirror,
             crate_box: objects.crate_box,
             skull: objects.skull,
+            skull_shape: assets.model.clone(),
             fence_box: objects.fence_box,
             water: objects.water,
             floor_mirror: objects.floor_mirror,

@@ -123,6 +123,32 @@ impl Scene {
         self.pipeline_from(device, recipe, &self.pipeline_layout, stages)
     }
 
+    /// Bakes a recipe into a pipeline that draws geometry of a lesson's own, not the room's objects:
+    /// vertices laid out as `buffers`, drawn by entries of a module made by [`Scene::shader_with`]
+    /// that read the frame (group 0, the camera and lights) and no object.
+    pub fn pipeline_for_vertices(
+        &self,
+        device: &wgpu::Device,
+        recipe: &Recipe,
+        (module, vertex, fragment): (&wgpu::ShaderModule, &'static str, &'static str),
+        buffers: &'static [Option<wgpu::VertexBufferLayout<'static>>],
+    ) -> wgpu::RenderPipeline {
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("frame-only pipeline layout"),
+            bind_group_layouts: &[Some(&self.frame_layout)],
+            immediate_size: 0,
+        });
+        let stages = Stages {
+            layout,
+            module: module.clone(),
+            vertex,
+            fragment,
+            buffers,
+            color_format: self.color_format,
+        };
+        self.pipelines.bake(device, recipe, &stages)
+    }
+
     /// A pipeline for the room's objects with a bind group of the caller's own (group 2) and
     /// fragment entry `fragment` of the scene's shader with `extra` WGSL appended.
     pub(crate) fn extended_pipeline(
