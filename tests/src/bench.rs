@@ -92,6 +92,9 @@ pub const VARIANTS: &[Case] = &[
     case("outline", &["way=screen-space"]),
     case("depth-complexity", &["count=passed-depth"]),
     case("depth-complexity", &["way=blend"]),
+    case("shadow-volume", &["faces=two-passes"]),
+    case("shadow-volume", &["method=z-pass"]),
+    case("shadow-volume", &["caps=off"]),
 ];
 
 /// How to measure.

@@ -520,6 +520,49 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "shadow-volume",
+        lesson: "shadow-volume",
+        ..SHOT
+    },
+    Shot {
+        name: "shadow-volume-volumes",
+        lesson: "shadow-volume",
+        settings: &["see-volumes=on"],
+        ..SHOT
+    },
+    Shot {
+        name: "shadow-volume-counts",
+        lesson: "shadow-volume",
+        step: Some("count the volumes"),
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
+        name: "shadow-volume-inside",
+        lesson: "shadow-volume",
+        camera: Some(IN_THE_SKULLS_SHADOW),
+        ..SHOT
+    },
+    Shot {
+        name: "shadow-volume-inside-z-pass",
+        lesson: "shadow-volume",
+        settings: &["method=z-pass"],
+        camera: Some(IN_THE_SKULLS_SHADOW),
+        ..SHOT
+    },
+    Shot {
+        name: "shadow-volume-no-caps",
+        lesson: "shadow-volume",
+        settings: &["caps=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "shadow-volume-clamp",
+        lesson: "shadow-volume",
+        settings: &["increment=clamp"],
+        ..SHOT
+    },
+    Shot {
         name: "predict-depth-test-not-equal",
         lesson: "depth-test",
         settings: &["depth=not-equal"],
@@ -610,6 +653,19 @@ pub const SHOTS: &[Shot] = &[
         name: "predict-depth-complexity-blend-stack",
         lesson: "depth-complexity",
         settings: &["way=blend", "stack=64"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-shadow-volume-z-pass",
+        lesson: "shadow-volume",
+        settings: &["method=z-pass"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-shadow-volume-inside-no-caps",
+        lesson: "shadow-volume",
+        settings: &["caps=off"],
+        camera: Some(IN_THE_SKULLS_SHADOW),
         ..SHOT
     },
 ];
@@ -720,6 +776,18 @@ pub const PAIRS: &[Pair] = &[
         wrong: "depth-complexity-wrap",
         right: "depth-complexity-stack",
     },
+    Pair {
+        wrong: "shadow-volume-inside-z-pass",
+        right: "shadow-volume-inside",
+    },
+    Pair {
+        wrong: "shadow-volume-no-caps",
+        right: "shadow-volume",
+    },
+    Pair {
+        wrong: "shadow-volume-clamp",
+        right: "shadow-volume",
+    },
 ];
 
 /// A camera behind the wall and to one side, where Luna's figure 10.1 looks from: the reflected
@@ -729,6 +797,9 @@ pub const BEHIND_THE_WALL: &str = "140,12,10";
 /// A camera low and to the right, where the crate hides the skull's jaw (lesson 12's outline
 /// depth test).
 pub const BEHIND_THE_CRATE: &str = "72,-3,7";
+
+/// Lesson 14's `IN_THE_SKULLS_SHADOW`: the eye low behind the skull, inside its shadow volume.
+pub const IN_THE_SKULLS_SHADOW: &str = "9,-18,3.8";
 
 impl Shot {
     pub fn path(&self) -> PathBuf {

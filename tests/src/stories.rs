@@ -73,6 +73,12 @@ pub const STORIES: &[BookStory] = &[
         settings: &[],
         pixel: (300, 250),
     },
+    BookStory {
+        name: "shadow-volume-beside-the-crates-shadow",
+        lesson: "shadow-volume",
+        settings: &[],
+        pixel: (560, 300),
+    },
 ];
 
 impl BookStory {

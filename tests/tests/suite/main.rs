@@ -26,6 +26,7 @@ mod readme;
 mod reflect_skull;
 mod render_to_texture;
 mod screenshots;
+mod shadow_volume;
 mod shape;
 mod soak;
 mod stencil_basics;
