@@ -197,9 +197,16 @@ pub fn two_passes(count: &Recipe) -> [Recipe; 2] {
         cull_mode: Some(culled),
         ..count.clone()
     };
-    match count.name {
-        "COUNT_Z_PASS" => [culling(Face::Back), culling(Face::Front)],
-        _ => [culling(Face::Front), culling(Face::Back)],
+    let adds = |op| {
+        matches!(
+            op,
+            StencilOperation::IncrementWrap | StencilOperation::IncrementClamp
+        )
+    };
+    let front = count.stencil.front;
+    match adds(front.pass_op) || adds(front.depth_fail_op) {
+        true => [culling(Face::Back), culling(Face::Front)],
+        false => [culling(Face::Front), culling(Face::Back)],
     }
 }
 // ANCHOR_END: two_passes
