@@ -95,6 +95,8 @@ pub const VARIANTS: &[Case] = &[
     case("shadow-volume", &["faces=two-passes"]),
     case("shadow-volume", &["method=z-pass"]),
     case("shadow-volume", &["caps=off"]),
+    case("capping", &["count=invert"]),
+    case("capping", &["crate=through"]),
 ];
 
 /// How to measure.

@@ -186,6 +186,29 @@ impl Mesh {
         index
     }
 
+    /// How many triangles the ray crosses (in front of its origin): odd where the origin lies
+    /// inside a closed mesh.
+    pub fn crossings(&self, origin: Vec3, direction: Vec3) -> usize {
+        let mut count = 0;
+        let mut stack = vec![0];
+        while let Some(node) = stack.pop() {
+            let (min, max, ref kind) = self.nodes[node];
+            if hit_box(origin, direction, min, max).is_none() {
+                continue;
+            }
+            match *kind {
+                Node::Inner(left, right) => stack.extend([left, right]),
+                Node::Leaf(start, end) => {
+                    let triangles = self.triangles[start..end].iter();
+                    count += triangles
+                        .filter(|t| hit_triangle(origin, direction, **t).is_some())
+                        .count();
+                }
+            }
+        }
+        count
+    }
+
     /// The nearest hit along the ray, closer than `limit`: its distance and its triangle.
     pub fn hit(&self, origin: Vec3, direction: Vec3, limit: f32) -> Option<(f32, [Vec3; 3])> {
         let mut best: Option<(f32, [Vec3; 3])> = None;

@@ -563,6 +563,43 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "capping",
+        lesson: "capping",
+        ..SHOT
+    },
+    Shot {
+        name: "capping-open",
+        lesson: "capping",
+        settings: &["cap=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "capping-counts",
+        lesson: "capping",
+        settings: &["crate=through"],
+        step: Some("count the inside"),
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
+        name: "capping-crate",
+        lesson: "capping",
+        settings: &["crate=through"],
+        ..SHOT
+    },
+    Shot {
+        name: "capping-parity",
+        lesson: "capping",
+        settings: &["crate=through", "count=invert"],
+        ..SHOT
+    },
+    Shot {
+        name: "capping-holed",
+        lesson: "capping",
+        settings: &["mesh=holed"],
+        ..SHOT
+    },
+    Shot {
         name: "predict-depth-test-not-equal",
         lesson: "depth-test",
         settings: &["depth=not-equal"],
@@ -666,6 +703,18 @@ pub const SHOTS: &[Shot] = &[
         lesson: "shadow-volume",
         settings: &["caps=off"],
         camera: Some(IN_THE_SKULLS_SHADOW),
+        ..SHOT
+    },
+    Shot {
+        name: "predict-capping-invert",
+        lesson: "capping",
+        settings: &["count=invert"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-capping-deeper",
+        lesson: "capping",
+        settings: &["cut=0.3"],
         ..SHOT
     },
 ];
@@ -787,6 +836,18 @@ pub const PAIRS: &[Pair] = &[
     Pair {
         wrong: "shadow-volume-clamp",
         right: "shadow-volume",
+    },
+    Pair {
+        wrong: "capping-open",
+        right: "capping",
+    },
+    Pair {
+        wrong: "capping-parity",
+        right: "capping-crate",
+    },
+    Pair {
+        wrong: "capping-holed",
+        right: "capping",
     },
 ];
 

@@ -79,6 +79,12 @@ pub const STORIES: &[BookStory] = &[
         settings: &[],
         pixel: (560, 300),
     },
+    BookStory {
+        name: "capping-on-the-cap",
+        lesson: "capping",
+        settings: &[],
+        pixel: (215, 250),
+    },
 ];
 
 impl BookStory {

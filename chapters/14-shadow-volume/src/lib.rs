@@ -17,8 +17,9 @@ use workbook::lesson::knobs;
 use workbook::math::shadow::LightSource;
 use workbook::room::camera::{Camera, View};
 use workbook::room::mesh::MeshData;
-use workbook::room::scene::{CRATE_CENTRE, CRATE_SIZE, Drawable, FrameBinding, LIGHTS, Light};
-use workbook::wgpu::util::DeviceExt;
+use workbook::room::scene::{
+    CRATE_CENTRE, CRATE_SIZE, Drawable, FrameBinding, LIGHTS, Light, POINTS, Points,
+};
 use workbook::wgpu::{self, CompareFunction, Face, StencilFaceState, StencilOperation};
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Pass, Recipe, Scene};
 
@@ -214,46 +215,25 @@ pub fn two_passes(count: &Recipe) -> [Recipe; 2] {
 /// The lesson's entries in the room's shader.
 pub const SHADER: &str = include_str!("shadow_volume.wgsl");
 
-/// How a volume's points lie in its vertex buffer: one `vec4<f32>` each.
-pub static POINTS: [Option<wgpu::VertexBufferLayout<'static>>; 1] =
-    [Some(wgpu::VertexBufferLayout {
-        array_stride: 16,
-        step_mode: wgpu::VertexStepMode::Vertex,
-        attributes: &[wgpu::VertexAttribute {
-            format: wgpu::VertexFormat::Float32x4,
-            offset: 0,
-            shader_location: 0,
-        }],
-    })];
-
 /// A shadow volume in a vertex buffer: its sides, then its caps.
 pub struct VolumeBuffer {
-    name: &'static str,
-    points: wgpu::Buffer,
+    points: Points,
     sides: u32,
-    all: u32,
 }
 
 impl VolumeBuffer {
     pub fn new(device: &wgpu::Device, name: &'static str, volume: &Volume) -> Self {
         let points = [&volume.sides[..], &volume.caps[..]].concat();
         Self {
-            name,
-            points: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(name),
-                contents: bytemuck::cast_slice(&points),
-                usage: wgpu::BufferUsages::VERTEX,
-            }),
+            points: Points::new(device, name, &points),
             sides: volume.sides.len() as u32,
-            all: points.len() as u32,
         }
     }
 
     /// Draws the sides, and the caps if `caps`.
     pub fn draw(&self, pass: &mut Pass<'_, '_>, caps: bool) {
-        pass.object(self.name);
-        pass.set_vertex_buffer(0, self.points.slice(..));
-        pass.draw(0..if caps { self.all } else { self.sides }, 0..1);
+        let end = if caps { self.points.len() } else { self.sides };
+        self.points.draw(pass, 0..end);
     }
 }
 

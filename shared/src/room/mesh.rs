@@ -289,6 +289,47 @@ impl MeshData {
         mesh
     }
 
+    /// A ball of `radius` centred on the origin, its triangles facing out: 24 rings of 48 quads
+    /// between the poles, texture coordinates running once round and once from pole to pole.
+    pub fn ball(radius: f32) -> Self {
+        let (rings, segments) = (24, 48);
+        let mut mesh = Self::default();
+        for ring in 0..=rings {
+            let theta = std::f32::consts::PI * ring as f32 / rings as f32;
+            for segment in 0..=segments {
+                let phi = std::f32::consts::TAU * segment as f32 / segments as f32;
+                let normal = Vec3::new(
+                    theta.sin() * phi.cos(),
+                    theta.cos(),
+                    theta.sin() * phi.sin(),
+                );
+                let uv = Vec2::new(segment as f32 / segments as f32, ring as f32 / rings as f32);
+                mesh.vertices.push(Vertex::new(normal * radius, normal, uv));
+            }
+        }
+        let at = |ring: u32, segment: u32| ring * (segments + 1) + segment;
+        for ring in 0..rings {
+            for segment in 0..segments {
+                let [a, b] = [at(ring, segment), at(ring + 1, segment)];
+                let [c, d] = [at(ring + 1, segment + 1), at(ring, segment + 1)];
+                mesh.indices.extend([a, c, b, a, d, c]);
+            }
+        }
+        mesh
+    }
+
+    /// The mesh turned inside out: every triangle's winding reversed and every normal turned round,
+    /// so that what faced out faces in (the inner wall of a hollow solid).
+    pub fn inside_out(mut self) -> Self {
+        for triangle in self.indices.chunks_exact_mut(3) {
+            triangle.swap(1, 2);
+        }
+        for vertex in &mut self.vertices {
+            vertex.normal = (-Vec3::from(vertex.normal)).into();
+        }
+        self
+    }
+
     /// The mesh moved by `offset`.
     pub fn translated(mut self, offset: Vec3) -> Self {
         for vertex in &mut self.vertices {
@@ -573,6 +614,40 @@ mod tests {
             let centre = (a + b + c) / 3.0;
             assert!(winding_normal.dot(centre) > 0.0, "a face points inwards");
             assert!(winding_normal.dot(mesh.vertices[triangle[0] as usize].normal.into()) > 0.0);
+        }
+    }
+
+    /// The ball's triangles (but the poles' slivers, which have no area) face out, and with its
+    /// normals; turned inside out, every one faces in.
+    #[test]
+    fn the_ball_faces_out_and_inside_out_faces_in() {
+        for (mesh, out) in [
+            (MeshData::ball(2.0), 1.0),
+            (MeshData::ball(2.0).inside_out(), -1.0),
+        ] {
+            let mut faces = 0;
+            for triangle in mesh.indices.chunks_exact(3) {
+                let vertex = |k: usize| &mesh.vertices[triangle[k] as usize];
+                let [a, b, c] = [0, 1, 2].map(|k| Vec3::from(vertex(k).position));
+                let winding_normal = (b - a).cross(c - a);
+                if winding_normal.length() < 1e-6 {
+                    continue;
+                }
+                faces += 1;
+                assert!(
+                    out * winding_normal.dot(a + b + c) > 0.0,
+                    "a face turned the wrong way"
+                );
+                assert!(
+                    winding_normal.dot(vertex(0).normal.into()) > 0.0,
+                    "a normal against its face"
+                );
+            }
+            assert_eq!(
+                faces,
+                48 * 22 * 2 + 48 * 2,
+                "every face but the poles' slivers"
+            );
         }
     }
 

@@ -7,6 +7,7 @@ mod assets;
 mod backends;
 mod bench;
 mod book;
+mod capping;
 mod depth;
 mod depth_complexity;
 mod drawing_order;

@@ -48,6 +48,14 @@ impl Drawable {
         self.mesh.draw(pass);
     }
 
+    /// Draws another mesh as this object, with its transform, material and texture: a lesson's
+    /// variant of the object's own mesh (the skull with a hole in it).
+    pub fn draw_mesh(&self, pass: &mut Pass<'_, '_>, mesh: &GpuMesh) {
+        pass.set_bind_group(1, &self.bind_group, &[]);
+        pass.object(self.name);
+        mesh.draw(pass);
+    }
+
     /// Draws the object's mirror image: its world matrix is `R * world`, R the reflection in the
     /// mirror's plane. Bind the reflected lights with [`Scene::bind_reflected_frame`] first.
     pub fn draw_reflected(&self, pass: &mut Pass<'_, '_>) {

@@ -7,8 +7,8 @@
 //!
 //! This file assembles the [`Scene`]; what it is built from lives beside it: the room's layout,
 //! meshes and textures (`room`), its `materials` and `lights`, the wall mirror's reflection
-//! (`mirror`), a frame's uniforms (`frame`), the objects on the GPU (`drawables`) and the scene's
-//! `pipelines`. All that is public is re-exported from here.
+//! (`mirror`), a frame's uniforms (`frame`), the objects on the GPU (`drawables`), a lesson's own
+//! geometry (`points`) and the scene's `pipelines`. All that is public is re-exported from here.
 
 mod drawables;
 mod frame;
@@ -16,6 +16,7 @@ mod lights;
 mod materials;
 mod mirror;
 mod pipelines;
+mod points;
 mod room;
 
 use std::path::{Path, PathBuf};
@@ -30,6 +31,7 @@ pub use materials::{
     SHADOW_MATERIAL, SKULL_MATERIAL, WATER_MATERIAL,
 };
 pub use mirror::{mirror_plane, mirror_reflection, reflected_lights, reflected_world};
+pub use points::{POINTS, Points};
 pub use room::{
     CLEAR_SRGB, CRATE_CENTRE, CRATE_SIZE, FENCE_CENTRE, FENCE_SIZE, FLOOR_DEPTH, FLOOR_MIRROR_MAX,
     FLOOR_MIRROR_MIN, MIRROR_MAX, MIRROR_MIN, SKULL_CENTRE, SKULL_SIZE, SKULL_YAW_DEGREES,

@@ -17,6 +17,7 @@ mod lesson_11;
 mod lesson_12;
 mod lesson_13;
 mod lesson_14;
+mod lesson_15;
 
 use workbook::gpu::{linear_to_srgb, srgb_to_linear};
 
