@@ -97,6 +97,8 @@ pub const VARIANTS: &[Case] = &[
     case("shadow-volume", &["caps=off"]),
     case("capping", &["count=invert"]),
     case("capping", &["crate=through"]),
+    case("portal", &["depth=1"]),
+    case("portal", &["clip=oblique"]),
 ];
 
 /// How to measure.

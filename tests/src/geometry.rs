@@ -3,6 +3,11 @@
 
 use glam::{Mat4, Vec3, Vec4Swizzles};
 use workbook::room::camera::Camera;
+use workbook::room::mesh::MeshData;
+use workbook::room::scene::{
+    CRATE_CENTRE, CRATE_SIZE, FLOOR_DEPTH, MIRROR_MAX, MIRROR_MIN, WALL_HALF_WIDTH, WALL_HEIGHT,
+    WALL_THICKNESS, skull_world,
+};
 
 /// A camera looking at a target of a given size in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -211,6 +216,24 @@ impl Mesh {
 
     /// The nearest hit along the ray, closer than `limit`: its distance and its triangle.
     pub fn hit(&self, origin: Vec3, direction: Vec3, limit: f32) -> Option<(f32, [Vec3; 3])> {
+        self.nearest(origin, direction, limit, false)
+    }
+
+    /// [`Mesh::hit`] among the triangles the ray meets from their front (counter-clockwise as it
+    /// sees them): what a draw that culls back faces shows.
+    pub fn hit_front(&self, origin: Vec3, direction: Vec3) -> Option<(f32, [Vec3; 3])> {
+        self.nearest(origin, direction, f32::MAX, true)
+    }
+
+    fn nearest(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        limit: f32,
+        front_only: bool,
+    ) -> Option<(f32, [Vec3; 3])> {
+        let facing =
+            |[a, b, c]: &[Vec3; 3]| !front_only || (b - a).cross(c - a).dot(direction) < 0.0;
         let mut best: Option<(f32, [Vec3; 3])> = None;
         let mut stack = vec![0];
         while let Some(node) = stack.pop() {
@@ -223,7 +246,7 @@ impl Mesh {
             match *kind {
                 Node::Inner(left, right) => stack.extend([left, right]),
                 Node::Leaf(start, end) => {
-                    for triangle in &self.triangles[start..end] {
+                    for triangle in self.triangles[start..end].iter().filter(|t| facing(t)) {
                         if let Some(t) = hit_triangle(origin, direction, *triangle)
                             && t < best.map_or(limit, |(b, _)| b)
                         {
@@ -235,4 +258,103 @@ impl Mesh {
         }
         best
     }
+}
+
+/// What a ray from the eye meets first in the room.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Surface {
+    Floor,
+    Wall,
+    Mirror,
+    Crate,
+    Skull,
+}
+
+/// A visible point: the surface, where it is, and its outward normal.
+pub struct Seen {
+    pub surface: Surface,
+    pub point: Vec3,
+    pub normal: Vec3,
+}
+
+/// The room as rays see it: floor, wall, mirror, crate and skull, where the lessons draw them, each
+/// seen from its front (the lessons cull back faces).
+pub struct RoomRays {
+    pub skull: Mesh,
+}
+
+impl Default for RoomRays {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl RoomRays {
+    /// The room, its skull read from the workbook's assets.
+    pub fn new() -> Self {
+        let assets = workbook::room::scene::default_assets();
+        let skull = MeshData::load_obj(&assets.join("skull.obj")).expect("the skull's mesh");
+        Self {
+            skull: Mesh::new(&skull, skull_world()),
+        }
+    }
+
+    /// The first surface the ray meets, seen from its front (the lesson culls back faces).
+    pub fn see(&self, origin: Vec3, direction: Vec3) -> Option<Seen> {
+        let (w, h, t) = (WALL_HALF_WIDTH, WALL_HEIGHT, WALL_THICKNESS);
+        let (a, b) = (MIRROR_MIN, MIRROR_MAX);
+        let mut hits: Vec<(f32, Surface, Vec3)> = Vec::new();
+        if direction.y < 0.0
+            && let Some(d) = hit_y0_rect(origin, direction, -w..=w, 0.0..=FLOOR_DEPTH)
+        {
+            hits.push((d, Surface::Floor, Vec3::Y));
+        }
+        if direction.z < 0.0
+            && let Some(d) = hit_z0_rect(origin, direction, a, b)
+        {
+            hits.push((d, Surface::Mirror, Vec3::Z));
+        }
+        let blocks = [
+            (Vec3::new(-w, 0.0, -t), Vec3::new(a.x, b.y, 0.0)),
+            (Vec3::new(b.x, 0.0, -t), Vec3::new(w, b.y, 0.0)),
+            (Vec3::new(-w, b.y, -t), Vec3::new(w, h, 0.0)),
+        ];
+        let half = Vec3::splat(CRATE_SIZE / 2.0);
+        let boxes = (blocks.iter().map(|&(min, max)| (min, max, Surface::Wall))).chain([(
+            CRATE_CENTRE - half,
+            CRATE_CENTRE + half,
+            Surface::Crate,
+        )]);
+        for (min, max, surface) in boxes {
+            if let Some(d) = hit_box(origin, direction, min, max) {
+                hits.push((d, surface, box_normal(origin + direction * d, min, max)));
+            }
+        }
+        if let Some((d, [p, q, r])) = self.skull.hit_front(origin, direction) {
+            hits.push((d, Surface::Skull, (q - p).cross(r - p).normalize()));
+        }
+        let (d, surface, normal) = hits.into_iter().min_by(|x, y| x.0.total_cmp(&y.0))?;
+        Some(Seen {
+            surface,
+            point: origin + direction * d,
+            normal,
+        })
+    }
+}
+
+/// The normal of the box face a point lies on.
+fn box_normal(point: Vec3, min: Vec3, max: Vec3) -> Vec3 {
+    let faces = [
+        ((point.x - min.x).abs(), -Vec3::X),
+        ((point.x - max.x).abs(), Vec3::X),
+        ((point.y - min.y).abs(), -Vec3::Y),
+        ((point.y - max.y).abs(), Vec3::Y),
+        ((point.z - min.z).abs(), -Vec3::Z),
+        ((point.z - max.z).abs(), Vec3::Z),
+    ];
+    faces
+        .into_iter()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap()
+        .1
 }

@@ -600,6 +600,35 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "portal",
+        lesson: "portal",
+        ..SHOT
+    },
+    Shot {
+        name: "portal-uncut",
+        lesson: "portal",
+        settings: &["clip=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "portal-not-cleared",
+        lesson: "portal",
+        settings: &["clear-behind=off"],
+        ..SHOT
+    },
+    Shot {
+        name: "portal-doorway-first",
+        lesson: "portal",
+        settings: &["order=doorway-first"],
+        ..SHOT
+    },
+    Shot {
+        name: "portal-levels",
+        lesson: "portal",
+        show: Some(Show::Stencil),
+        ..SHOT
+    },
+    Shot {
         name: "predict-depth-test-not-equal",
         lesson: "depth-test",
         settings: &["depth=not-equal"],
@@ -715,6 +744,18 @@ pub const SHOTS: &[Shot] = &[
         name: "predict-capping-deeper",
         lesson: "capping",
         settings: &["cut=0.3"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-portal-oblique",
+        lesson: "portal",
+        settings: &["clip=oblique"],
+        ..SHOT
+    },
+    Shot {
+        name: "predict-portal-depth-1",
+        lesson: "portal",
+        settings: &["depth=1"],
         ..SHOT
     },
 ];
@@ -848,6 +889,18 @@ pub const PAIRS: &[Pair] = &[
     Pair {
         wrong: "capping-holed",
         right: "capping",
+    },
+    Pair {
+        wrong: "portal-uncut",
+        right: "portal",
+    },
+    Pair {
+        wrong: "portal-not-cleared",
+        right: "portal",
+    },
+    Pair {
+        wrong: "portal-doorway-first",
+        right: "portal",
     },
 ];
 

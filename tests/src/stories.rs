@@ -86,6 +86,12 @@ pub const STORIES: &[BookStory] = &[
         settings: &[],
         pixel: (215, 250),
     },
+    BookStory {
+        name: "portal-in-room-2",
+        lesson: "portal",
+        settings: &[],
+        pixel: (270, 120),
+    },
 ];
 
 impl BookStory {

@@ -212,6 +212,14 @@ pub const RESET_DEPTH: Recipe = Recipe {
     color_writes: ColorWrites::empty(),
     ..OPAQUE
 };
+
+/// RESET_DEPTH, writing the sky's colour as well: behind an opening, the room beyond is seen
+/// against its own sky.
+pub const RESET_TO_THE_SKY: Recipe = Recipe {
+    name: "RESET_TO_THE_SKY",
+    color_writes: ColorWrites::ALL,
+    ..RESET_DEPTH
+};
 // ANCHOR_END: reset_depth
 
 // ANCHOR: shadow

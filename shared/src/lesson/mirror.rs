@@ -44,17 +44,34 @@ impl MarkedRoom {
 }
 
 /// RESET_DEPTH's pipeline: a far-plane triangle over the screen, drawn where the stencil holds the
-/// reference, so that the marked pixels' depth is the far plane again.
+/// reference, so that the marked pixels' depth is the far plane again (and, made
+/// [`ResetDepth::to_the_sky`], their colour the sky's).
 pub struct ResetDepth {
     pipeline: wgpu::RenderPipeline,
 }
 
 impl ResetDepth {
     pub fn new(gpu: &Gpu, scene: &Scene) -> Self {
+        Self::with(gpu, scene, &states::RESET_DEPTH, "fs_no_colour")
+    }
+
+    /// RESET_TO_THE_SKY: the depth reset and the colour cleared to the sky, so that what lies
+    /// beyond an opening is seen against its own sky, not against what was drawn there before
+    /// (lesson 16's doorway, whose own surface the room drew).
+    pub fn to_the_sky(gpu: &Gpu, scene: &Scene) -> Self {
+        Self::with(gpu, scene, &states::RESET_TO_THE_SKY, "fs_sky")
+    }
+
+    fn with(gpu: &Gpu, scene: &Scene, recipe: &Recipe, fragment: &'static str) -> Self {
         let device = &gpu.device;
+        let [r, g, b] = crate::room::scene::CLEAR_SRGB.map(crate::gpu::srgb_to_linear);
+        let source = format!(
+            "{}\nconst SKY = vec4<f32>({r:?}, {g:?}, {b:?}, 1.0);\n",
+            include_str!("../shaders/reset_depth.wgsl")
+        );
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("reset_depth.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/reset_depth.wgsl").into()),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
         });
         let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("reset depth pipeline layout"),
@@ -65,11 +82,11 @@ impl ResetDepth {
             layout,
             module: shader,
             vertex: "vs_far_plane",
-            fragment: "fs_no_colour",
+            fragment,
             buffers: &[],
             color_format: scene.color_format,
         };
-        let pipeline = scene.pipelines.bake(device, &states::RESET_DEPTH, &stages);
+        let pipeline = scene.pipelines.bake(device, recipe, &stages);
         Self { pipeline }
     }
 

@@ -1,5 +1,6 @@
 // RESET_DEPTH: one triangle over the whole screen at the far plane (depth exactly 1) that writes no
 // colour. Drawn with the stencil test, it puts the depth of the marked pixels back to the far plane.
+// RESET_TO_THE_SKY writes the sky's colour too (SKY, linear, is appended by the code that loads this).
 
 @vertex
 fn vs_far_plane(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f32> {
@@ -10,4 +11,9 @@ fn vs_far_plane(@builtin(vertex_index) index: u32) -> @builtin(position) vec4<f3
 @fragment
 fn fs_no_colour() -> @location(0) vec4<f32> {
     return vec4<f32>(0.0);
+}
+
+@fragment
+fn fs_sky() -> @location(0) vec4<f32> {
+    return SKY;
 }

@@ -246,7 +246,7 @@ fn the_teaching_plan_adds_up() {
         .iter()
         .filter(|s| s.title.contains("workshop"))
         .count();
-    assert_eq!((classes, workshops), (5, 1), "{sessions:#?}");
+    assert_eq!((classes, workshops), (6, 1), "{sessions:#?}");
     let mut problems = Vec::new();
     let mut taught = Vec::new();
     for session in &sessions {

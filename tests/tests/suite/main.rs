@@ -23,6 +23,7 @@ mod outline;
 mod panel;
 mod pixel;
 mod planar_shadow;
+mod portal;
 mod readme;
 mod reflect_skull;
 mod render_to_texture;

@@ -9,48 +9,25 @@ use glam::Vec3;
 use lessons::shadow_volume::{IN_THE_SKULLS_SHADOW, KEY, ShadowVolume};
 use workbook::math::shadow::LightSource;
 use workbook::room::camera::Camera;
-use workbook::room::mesh::MeshData;
-use workbook::room::scene::{
-    CRATE_CENTRE, CRATE_SIZE, FLOOR_DEPTH, MIRROR_MAX, MIRROR_MIN, WALL_HALF_WIDTH, WALL_HEIGHT,
-    WALL_THICKNESS, skull_world,
-};
+use workbook::room::scene::{CRATE_CENTRE, CRATE_SIZE};
 use workbook::{Lesson, Show, Stop};
-use workbook_tests::geometry::{Mesh, View, hit_box, hit_y0_rect, hit_z0_rect};
+use workbook_tests::geometry::{RoomRays, View, hit_box};
 use workbook_tests::shots;
 
 /// The size the counts are read at.
 pub const SIZE: (u32, u32) = (320, 180);
 
-/// What a ray from the eye meets first.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Surface {
-    Floor,
-    Wall,
-    Mirror,
-    Crate,
-    Skull,
-}
-
-/// A visible point: the surface, where it is, and its outward normal.
-struct Seen {
-    surface: Surface,
-    point: Vec3,
-    normal: Vec3,
-}
-
 /// The room as rays see it (the lesson draws floor, wall, mirror, crate and skull), lit by a key
 /// light.
 pub struct Room {
-    skull: Mesh,
+    rays: RoomRays,
     light: LightSource,
 }
 
 impl Room {
     pub fn new(light: LightSource) -> Self {
-        let skull = MeshData::load_obj(&workbook::room::scene::default_assets().join("skull.obj"))
-            .expect("the skull's mesh");
         Self {
-            skull: Mesh::new(&skull, skull_world()),
+            rays: RoomRays::new(),
             light,
         }
     }
@@ -65,48 +42,6 @@ impl Room {
         }
     }
 
-    /// The first surface the ray meets, seen from its front (the lesson culls back faces).
-    fn see(&self, origin: Vec3, direction: Vec3) -> Option<Seen> {
-        let (w, h, t) = (WALL_HALF_WIDTH, WALL_HEIGHT, WALL_THICKNESS);
-        let (a, b) = (MIRROR_MIN, MIRROR_MAX);
-        let mut hits: Vec<(f32, Surface, Vec3)> = Vec::new();
-        if direction.y < 0.0
-            && let Some(d) = hit_y0_rect(origin, direction, -w..=w, 0.0..=FLOOR_DEPTH)
-        {
-            hits.push((d, Surface::Floor, Vec3::Y));
-        }
-        if direction.z < 0.0
-            && let Some(d) = hit_z0_rect(origin, direction, a, b)
-        {
-            hits.push((d, Surface::Mirror, Vec3::Z));
-        }
-        let blocks = [
-            (Vec3::new(-w, 0.0, -t), Vec3::new(a.x, b.y, 0.0)),
-            (Vec3::new(b.x, 0.0, -t), Vec3::new(w, b.y, 0.0)),
-            (Vec3::new(-w, b.y, -t), Vec3::new(w, h, 0.0)),
-        ];
-        let half = Vec3::splat(CRATE_SIZE / 2.0);
-        let boxes = (blocks.iter().map(|&(min, max)| (min, max, Surface::Wall))).chain([(
-            CRATE_CENTRE - half,
-            CRATE_CENTRE + half,
-            Surface::Crate,
-        )]);
-        for (min, max, surface) in boxes {
-            if let Some(d) = hit_box(origin, direction, min, max) {
-                hits.push((d, surface, box_normal(origin + direction * d, min, max)));
-            }
-        }
-        if let Some((d, [p, q, r])) = self.skull.hit(origin, direction, f32::MAX) {
-            hits.push((d, Surface::Skull, (q - p).cross(r - p).normalize()));
-        }
-        let (d, surface, normal) = hits.into_iter().min_by(|x, y| x.0.total_cmp(&y.0))?;
-        Some(Seen {
-            surface,
-            point: origin + direction * d,
-            normal,
-        })
-    }
-
     /// Whether the key light is hidden from `point` by the skull or the crate (the solids that
     /// cast shadows).
     fn in_shadow(&self, point: Vec3, normal: Vec3) -> bool {
@@ -115,7 +50,7 @@ impl Room {
         let half = Vec3::splat(CRATE_SIZE / 2.0);
         let crate_box = hit_box(start, direction, CRATE_CENTRE - half, CRATE_CENTRE + half);
         crate_box.is_some_and(|d| d < distance)
-            || self.skull.hit(start, direction, distance).is_some()
+            || self.rays.skull.hit(start, direction, distance).is_some()
     }
 
     /// What the rays through pixel (x, y) say: whether its visible point is in shadow, where the
@@ -125,7 +60,7 @@ impl Room {
     pub fn judge(&self, view: &View, x: u32, y: u32) -> Option<bool> {
         let look = |dx: f32, dy: f32| {
             let (origin, direction) = view.ray_at(x as f32 + dx, y as f32 + dy);
-            let seen = self.see(origin, direction)?;
+            let seen = self.rays.see(origin, direction)?;
             (seen.normal.dot(self.to_light(seen.point).0) > 0.15)
                 .then(|| (seen.surface, self.in_shadow(seen.point, seen.normal)))
         };
@@ -136,23 +71,6 @@ impl Room {
             .all(|&(dx, dy)| look(dx, dy) == Some(centre))
             .then_some(centre.1)
     }
-}
-
-/// The normal of the box face a point lies on.
-fn box_normal(point: Vec3, min: Vec3, max: Vec3) -> Vec3 {
-    let faces = [
-        ((point.x - min.x).abs(), -Vec3::X),
-        ((point.x - max.x).abs(), Vec3::X),
-        ((point.y - min.y).abs(), -Vec3::Y),
-        ((point.y - max.y).abs(), Vec3::Y),
-        ((point.z - min.z).abs(), -Vec3::Z),
-        ((point.z - max.z).abs(), Vec3::Z),
-    ];
-    faces
-        .into_iter()
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .unwrap()
-        .1
 }
 
 /// The counts: the stencil after "count the volumes" (step 3), seen from `camera`.
