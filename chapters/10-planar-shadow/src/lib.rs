@@ -239,7 +239,9 @@ impl Lesson for PlanarShadow {
         frame.step("draw the room", |pass| {
             pass.set_pipeline(&self.draw_room);
             self.room_frame.bind(pass);
-            room(scene).iter().for_each(|object| object.draw(pass));
+            for object in scene.solid_objects() {
+                object.draw(pass);
+            }
         });
         frame.step("mark the mirror", |pass| {
             pass.set_pipeline(&self.mark_mirror);
@@ -289,9 +291,4 @@ impl Lesson for PlanarShadow {
 /// What the wall mirror shows: the floor, the crate and the skull in front of it.
 fn reflected(scene: &Scene) -> [&Drawable; 3] {
     [&scene.floor, &scene.crate_box, &scene.skull]
-}
-
-/// The room: floor, wall, crate and skull (the mirror is marked, then drawn as glass).
-fn room(scene: &Scene) -> [&Drawable; 4] {
-    [&scene.floor, &scene.wall, &scene.crate_box, &scene.skull]
 }

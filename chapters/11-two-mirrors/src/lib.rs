@@ -12,7 +12,7 @@ use workbook::lesson::mirror::ResetDepth;
 use workbook::math::reflect::{Plane, reflection};
 use workbook::room::camera::Camera;
 use workbook::room::mirror_world::MirrorWorld;
-use workbook::room::scene::{Drawable, Placed, mirror_plane};
+use workbook::room::scene::{Placed, mirror_plane};
 use workbook::wgpu::{self, CompareFunction, FrontFace, StencilOperation};
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Pass, Recipe, Scene};
 
@@ -189,7 +189,7 @@ impl Lesson for TwoMirrors {
         let replace = knobs.get("mark") == "replace";
         let pipeline = |recipe: &Recipe| scene.pipeline(&gpu.device, recipe);
         let [ccw, cw] = [FrontFace::Ccw, FrontFace::Cw].map(|face| level_recipes(face, replace));
-        let objects = room(scene);
+        let objects = scene.solid_objects();
         let worlds = (1..=depth)
             .map(|level| {
                 // Level k is seen through the mirror of level k - 1, where that level has it.
@@ -231,7 +231,9 @@ impl Lesson for TwoMirrors {
         frame.clear();
         frame.step(DRAW_LEVEL[0], |pass| {
             pass.set_pipeline(&self.draw_room);
-            room(scene).iter().for_each(|object| object.draw(pass));
+            for object in scene.solid_objects() {
+                object.draw(pass);
+            }
         });
         for level in 0..self.depth {
             // Mark the mirror this level sees: k + 1 inside level k's pixels (where the stencil
@@ -252,9 +254,9 @@ impl Lesson for TwoMirrors {
                 pass.set_pipeline(&self.draw_level[self.face(level + 1)]);
                 pass.set_stencil_reference(level as u32 + 1);
                 world.bind(pass);
-                room(scene)
-                    .iter()
-                    .for_each(|object| world.draw(pass, object));
+                for object in scene.solid_objects() {
+                    world.draw(pass, object);
+                }
             });
         }
         // The deepest level's mirror, not followed further: plain glass.
@@ -287,9 +289,4 @@ impl TwoMirrors {
             level => self.worlds[level - 1].bind(pass),
         }
     }
-}
-
-/// The room of every level: floor, wall, crate and skull.
-fn room(scene: &Scene) -> [&Drawable; 4] {
-    [&scene.floor, &scene.wall, &scene.crate_box, &scene.skull]
 }

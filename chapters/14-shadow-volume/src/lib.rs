@@ -18,7 +18,7 @@ use workbook::math::shadow::LightSource;
 use workbook::room::camera::{Camera, View};
 use workbook::room::mesh::MeshData;
 use workbook::room::scene::{
-    CRATE_CENTRE, CRATE_SIZE, Drawable, FrameBinding, LIGHTS, Light, POINTS, Points,
+    CRATE_CENTRE, CRATE_SIZE, FrameBinding, LIGHTS, Light, POINTS, Points,
 };
 use workbook::wgpu::{self, CompareFunction, Face, StencilFaceState, StencilOperation};
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Pass, Recipe, Scene};
@@ -254,17 +254,6 @@ pub fn volumes(scene: &Scene, light: LightSource) -> [(&'static str, Volume); 2]
     ]
 }
 
-/// The room this lesson draws: floor, wall, mirror (as a plain surface), crate and skull.
-pub fn room(scene: &Scene) -> [&Drawable; 5] {
-    [
-        &scene.floor,
-        &scene.wall,
-        &scene.mirror,
-        &scene.crate_box,
-        &scene.skull,
-    ]
-}
-
 pub struct ShadowVolume {
     lights: [Light; 3],
     room_frame: FrameBinding,
@@ -307,7 +296,9 @@ impl Lesson for ShadowVolume {
         frame.step("draw the room in shadow", |pass| {
             pass.set_pipeline(&self.draw_in_shadow);
             self.room_frame.bind(pass);
-            room(scene).iter().for_each(|object| object.draw(pass));
+            for object in scene.whole_room() {
+                object.draw(pass);
+            }
         });
         // Each pixel counts the volumes' faces between the eye and its visible point (z-pass)
         // or behind it (z-fail): the count is how many volumes that point lies in.
@@ -325,7 +316,9 @@ impl Lesson for ShadowVolume {
             pass.set_pipeline(&self.add_key_light);
             pass.set_stencil_reference(0);
             self.room_frame.bind(pass);
-            room(scene).iter().for_each(|object| object.draw(pass));
+            for object in scene.whole_room() {
+                object.draw(pass);
+            }
         });
         if let Some(see_volumes) = &self.see_volumes {
             frame.step("see the volumes", |pass| {

@@ -244,10 +244,27 @@ impl Scene {
         FrameBinding::new(device, &self.frame_layout, label)
     }
 
+    /// The room's solid objects, all but the mirror: floor, wall, crate and skull.
+    pub fn solid_objects(&self) -> [&Drawable; 4] {
+        [&self.floor, &self.wall, &self.crate_box, &self.skull]
+    }
+
+    /// The whole room, the mirror's surface with the rest as a plain surface (its ice): floor, wall,
+    /// mirror, crate and skull — the room of the lessons whose subject is not the mirror.
+    pub fn whole_room(&self) -> [&Drawable; 5] {
+        [
+            &self.floor,
+            &self.wall,
+            &self.mirror,
+            &self.crate_box,
+            &self.skull,
+        ]
+    }
+
     /// Draws the room's solid objects — floor, wall, crate and skull, all but the mirror — with the
     /// pipeline already set. The mirror lessons start every frame with it.
     pub fn draw_room(&self, pass: &mut Pass<'_, '_>) {
-        for object in [&self.floor, &self.wall, &self.crate_box, &self.skull] {
+        for object in self.solid_objects() {
             object.draw(pass);
         }
     }
