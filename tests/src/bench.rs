@@ -99,6 +99,7 @@ pub const VARIANTS: &[Case] = &[
     case("capping", &["crate=through"]),
     case("portal", &["depth=1"]),
     case("portal", &["clip=oblique"]),
+    case("portal", &["clip=off"]),
 ];
 
 /// How to measure.

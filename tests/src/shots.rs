@@ -623,6 +623,24 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
+        name: "portal-depth-0",
+        lesson: "portal",
+        settings: &["depth=0"],
+        ..SHOT
+    },
+    Shot {
+        name: "portal-depth-1",
+        lesson: "portal",
+        settings: &["depth=1"],
+        ..SHOT
+    },
+    Shot {
+        name: "portal-depth-2",
+        lesson: "portal",
+        settings: &["depth=2"],
+        ..SHOT
+    },
+    Shot {
         name: "portal-levels",
         lesson: "portal",
         show: Some(Show::Stencil),
@@ -753,9 +771,9 @@ pub const SHOTS: &[Shot] = &[
         ..SHOT
     },
     Shot {
-        name: "predict-portal-depth-1",
+        name: "predict-portal-side",
         lesson: "portal",
-        settings: &["depth=1"],
+        camera: Some("35,10,8"),
         ..SHOT
     },
 ];

@@ -11,9 +11,10 @@ use workbook::gpu::states::{self, Clip};
 use workbook::lesson::knobs;
 use workbook::lesson::mirror::ResetDepth;
 use workbook::math::reflect::Plane;
+use workbook::math::screen::ScreenRect;
 use workbook::room::camera::Camera;
 use workbook::room::mirror_world::MirrorWorld;
-use workbook::room::scene::{Drawable, LIGHTS, Light, Placed, mirror_plane};
+use workbook::room::scene::{LIGHTS, Light, MIRROR_MAX, MIRROR_MIN, Placed, mirror_plane};
 use workbook::wgpu::{self, CompareFunction, StencilOperation};
 use workbook::{Frame, Gpu, Knob, Knobs, Lesson, Recipe, Scene};
 
@@ -90,7 +91,36 @@ pub fn room_transform(portal: Mat4, k: usize) -> Mat4 {
 pub fn doorway(portal: Mat4, k: usize) -> Plane {
     mirror_plane().transformed(room_transform(portal, k - 1))
 }
+
 // ANCHOR_END: move
+
+// ANCHOR: scissor
+/// Where room k can show on a target of `size`, for k from 1 to `depth`: the rectangle around
+/// doorway k's corners on the screen, within the rectangle of the doorway before it.
+pub fn behind_doorways(
+    portal: Mat4,
+    depth: usize,
+    view_projection: Mat4,
+    size: (u32, u32),
+) -> Vec<ScreenRect> {
+    let (min, max) = (MIRROR_MIN, MIRROR_MAX);
+    let corners = [
+        (min.x, min.y),
+        (max.x, min.y),
+        (max.x, max.y),
+        (min.x, max.y),
+    ]
+    .map(|(x, y)| Vec3::new(x, y, min.z));
+    let mut inside = ScreenRect::whole(size);
+    (1..=depth)
+        .map(|k| {
+            let doorway = corners.map(|c| room_transform(portal, k - 1).transform_point3(c));
+            inside = inside.within(ScreenRect::around(view_projection, &doorway, size));
+            inside
+        })
+        .collect()
+}
+// ANCHOR_END: scissor
 
 /// The far rooms' light: an evening sun, low and warm, from the left, and a cool sky.
 pub const EVENING: [Light; 3] = [
@@ -158,18 +188,8 @@ pub struct Portal {
     rooms: Vec<MirrorWorld>,
     /// Doorway k's surface, placed in room k − 1, for k from 1 to depth.
     doorways: Vec<Placed>,
-}
-
-/// The room: floor, wall, the doorway's surface (the mirror's ice, drawn as a plain surface),
-/// crate and skull.
-pub fn room(scene: &Scene) -> [&Drawable; 5] {
-    [
-        &scene.floor,
-        &scene.wall,
-        &scene.mirror,
-        &scene.crate_box,
-        &scene.skull,
-    ]
+    /// The portal's transform.
+    portal: Mat4,
 }
 
 impl Lesson for Portal {
@@ -199,25 +219,38 @@ impl Lesson for Portal {
         }
         frame.step(DRAW_ROOM_STEPS[0], |pass| {
             pass.set_pipeline(&self.draw_room);
-            room(scene).iter().for_each(|object| object.draw(pass));
+            for object in scene.whole_room() {
+                object.draw(pass);
+            }
         });
+        let view_projection = frame.view.view_projection();
+        let scissors = behind_doorways(self.portal, self.depth, view_projection, frame.size());
         for k in 0..self.depth {
             // Doorway k + 1, seen from room k: k + 1 where the stencil holds k and the doorway
             // passes the depth test.
             if !self.doorway_first || k > 0 {
                 self.mark_doorway(frame, k);
             }
+            // Room k + 1 shows only inside doorway k + 1: the scissor rectangle around it spares
+            // the rasterizer the pixels outside.
+            let inside = scissors[k];
             // Whatever room k drew behind its doorway must not hide room k + 1.
             if let Some(reset) = &self.reset_depth {
-                frame.step(CLEAR_BEHIND_STEPS[k], |pass| reset.draw(pass, k as u32 + 1));
+                frame.step(CLEAR_BEHIND_STEPS[k], |pass| {
+                    pass.set_scissor(inside);
+                    reset.draw(pass, k as u32 + 1);
+                });
             }
             // Room k + 1: this room moved k + 1 times, where the stencil holds k + 1.
             let far = &self.rooms[k];
             frame.step(DRAW_ROOM_STEPS[k + 1], |pass| {
+                pass.set_scissor(inside);
                 pass.set_pipeline(&self.draw_far_room);
                 pass.set_stencil_reference(k as u32 + 1);
                 far.bind(pass);
-                room(scene).iter().for_each(|object| far.draw(pass, object));
+                for object in scene.whole_room() {
+                    far.draw(pass, object);
+                }
             });
         }
     }
@@ -229,7 +262,7 @@ impl Portal {
     pub fn through(gpu: &Gpu, scene: &Scene, knobs: &Knobs, portal: Mat4) -> anyhow::Result<Self> {
         let depth: usize = knobs.get("depth").parse()?;
         let pipeline = |recipe: &Recipe| scene.pipeline(&gpu.device, recipe);
-        let objects = room(scene);
+        let objects = scene.whole_room();
         let rooms = (1..=depth)
             .map(|k| {
                 let mut far = MirrorWorld::seen_through(
@@ -257,6 +290,7 @@ impl Portal {
             oblique: knobs.get("clip") == "oblique",
             rooms,
             doorways,
+            portal,
         })
     }
 

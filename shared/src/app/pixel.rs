@@ -359,6 +359,7 @@ fn story_steps<L: Lesson>(
             before,
             after,
             fragments,
+            outside_scissor: draw.outside_scissor,
             passed: passed[index] > 0,
         });
     }

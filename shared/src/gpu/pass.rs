@@ -10,6 +10,7 @@ use std::ops::Range;
 
 use crate::gpu::pipelines::{Fate, Pipelines, Twin};
 use crate::gpu::states::Recipe;
+use crate::math::screen::ScreenRect;
 
 /// A step's render pass.
 pub struct Pass<'p, 'e> {
@@ -87,6 +88,11 @@ impl<'p, 'e> Pass<'p, 'e> {
         }
     }
 
+    /// The scissor rectangle `rect` (see [`Pass::set_scissor_rect`]).
+    pub fn set_scissor(&mut self, rect: ScreenRect) {
+        self.set_scissor_rect(rect.x, rect.y, rect.width, rect.height);
+    }
+
     /// Names the object the next draw draws (a pixel's story says which object reached it).
     pub fn object(&mut self, name: &'static str) {
         if let Some((probe, ..)) = &mut self.probe {
@@ -116,6 +122,7 @@ impl<'p, 'e> Pass<'p, 'e> {
             object: state.object,
             reference: state.reference,
             blend_constant: state.blend_constant,
+            outside_scissor: state.outside_scissor,
         });
         probe.state.object = None;
         let outside = probe.state.outside_scissor;
@@ -349,4 +356,6 @@ pub struct Draw {
     pub object: Option<&'static str>,
     pub reference: u32,
     pub blend_constant: wgpu::Color,
+    /// Whether the step's scissor rectangle left the watched pixel out (the draw was not drawn).
+    pub outside_scissor: bool,
 }

@@ -66,6 +66,8 @@ pub struct DrawStory {
     /// (read from the draw's twin): none where the draw does not cover the pixel, more than one
     /// where its triangles overlap there (a flattened skull, a box drawn with both faces).
     pub fragments: Vec<Fragment>,
+    /// Whether the step's scissor rectangle leaves the pixel out: the draw is not rasterized there.
+    pub outside_scissor: bool,
     /// Whether a fragment passed both tests, by the GPU's own count (an occlusion query).
     pub passed: bool,
 }
@@ -230,6 +232,11 @@ impl DrawStory {
             (None, None) => "(a pipeline of its own)".to_string(),
         };
         let count = self.fragments.len();
+        if count == 0 && self.outside_scissor {
+            return vec![format!(
+                "{name}: not drawn here, outside the step's scissor rectangle"
+            )];
+        }
         if count == 0 {
             return vec![format!("{name}: does not reach this pixel")];
         }
@@ -580,6 +587,7 @@ mod tests {
                     front: None,
                 })
                 .collect(),
+            outside_scissor: false,
             passed: false,
         }
     }
@@ -682,6 +690,7 @@ mod tests {
             before,
             after: before,
             fragments: fragments.to_vec(),
+            outside_scissor: false,
             passed: false,
         };
         story.after = story.predicted().unwrap();

@@ -7,7 +7,7 @@
 //! camera by the inverse.
 
 use glam::{Mat4, Vec3};
-use lessons::portal::{EVENING, Portal, doorway, portal, room, room_transform};
+use lessons::portal::{EVENING, Portal, behind_doorways, doorway, portal, room_transform};
 use workbook::app::headless::{self, Request};
 use workbook::gpu::states::{self, Clip};
 use workbook::room::camera::Camera;
@@ -89,6 +89,54 @@ fn the_stencil_counts_the_doorways_each_ray_passes() {
     }
 }
 
+/// The scissor rectangles leave out no pixel a far room shows: wherever the ray through a pixel's
+/// centre passes k doorways, the pixel lies inside room k's rectangle. The rays judge pixel
+/// centres, where the GPU samples, so a rectangle one pixel short at an edge fails. And each
+/// rectangle is smaller than the one before, so that the scissor spares the rasterizer something.
+#[test]
+fn the_scissor_keeps_every_pixel_a_far_room_shows() {
+    let rays = RoomRays::new();
+    let depth = 3;
+    // The book's pose, from the side, from above, and close to the wall, where doorway 1's
+    // corners at the right lie behind the eye and its rectangle is the whole screen.
+    const POSES: [&str; 5] = ["15,10,8", "35,10,8", "-30,25,6", "55,5,2", "65,5,2"];
+    for pose in POSES {
+        let view = View::new(Camera::parse(pose).unwrap(), SIZE.0, SIZE.1);
+        let scissors = behind_doorways(portal(), depth, view.view_projection(), SIZE);
+        let (mut seen, mut outside) = ([0; 3], [0; 3]);
+        for (x, y) in (0..SIZE.1).flat_map(|y| (0..SIZE.0).map(move |x| (x, y))) {
+            let passed = doorways_passed(&rays, portal(), view.ray(x, y), depth as u32) as usize;
+            for k in 1..=passed {
+                seen[k - 1] += 1;
+                outside[k - 1] += !scissors[k - 1].contains((x, y)) as usize;
+            }
+        }
+        eprintln!("{pose}: {scissors:?}, rooms' pixels {seen:?}, outside {outside:?}");
+        assert_eq!(
+            outside, [0; 3],
+            "{pose}: pixels of rooms 1 to 3 outside their rectangles"
+        );
+        assert!(
+            seen.iter().all(|&n| n > 0),
+            "{pose}: rooms 1 to 3 seen by {seen:?} pixels"
+        );
+        if pose == POSES[0] {
+            let areas: Vec<u32> = scissors
+                .iter()
+                .map(|rect| rect.width * rect.height)
+                .collect();
+            assert!(
+                areas[0] < SIZE.0 * SIZE.1 / 2,
+                "{pose}: rectangles {areas:?}"
+            );
+            assert!(
+                areas[1] < areas[0] && areas[2] < areas[1],
+                "{pose}: {areas:?}"
+            );
+        }
+    }
+}
+
 /// The wrong pictures' stencils: a doorway marked before the room it stands in (what stands in
 /// front of it no longer hides it), a far room left uncut (what of it stands on this side of its
 /// doorway hides the next doorway), and the depth not reset behind a doorway (the doorway's own
@@ -167,7 +215,9 @@ impl<P: Through, const K: usize> Lesson for MovedCamera<P, K> {
         frame.step("draw the room from the moved camera", |pass| {
             pass.set_pipeline(&self.draw);
             self.frame.bind(pass);
-            room(scene).iter().for_each(|object| object.draw(pass));
+            for object in scene.whole_room() {
+                object.draw(pass);
+            }
         });
     }
 }
