@@ -80,9 +80,14 @@ impl<'p, 'e> Pass<'p, 'e> {
             Some((probe, pixel))
         });
         match watched {
-            Some((probe, (px, py))) => {
-                probe.state.outside_scissor =
-                    !(px >= x && px - x < width && py >= y && py - y < height);
+            Some((probe, pixel)) => {
+                let rect = ScreenRect {
+                    x,
+                    y,
+                    width,
+                    height,
+                };
+                probe.state.outside_scissor = !rect.contains(pixel);
             }
             None => self.raw.set_scissor_rect(x, y, width, height),
         }

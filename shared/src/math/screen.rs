@@ -1,7 +1,7 @@
 //! Rectangles of pixels on the screen: where a flat shape seen by a camera can show, for a scissor
 //! rectangle that keeps the rasterizer to it (lesson 16's doorways).
 
-use glam::{Mat4, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
 /// A rectangle of whole pixels, from the top left, as wgpu's scissor rectangle takes it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -29,8 +29,8 @@ impl ScreenRect {
     /// behind the eye, whose projection wraps round through infinity.
     pub fn around(view_projection: Mat4, corners: &[Vec3], size: (u32, u32)) -> Self {
         let (width, height) = (size.0 as f32, size.1 as f32);
-        let mut min = glam::Vec2::splat(f32::INFINITY);
-        let mut max = glam::Vec2::splat(f32::NEG_INFINITY);
+        let mut min = Vec2::splat(f32::INFINITY);
+        let mut max = Vec2::splat(f32::NEG_INFINITY);
         for corner in corners {
             let clip = view_projection * corner.extend(1.0);
             if clip.w <= f32::EPSILON {
@@ -38,7 +38,7 @@ impl ScreenRect {
             }
             // Normalised device coordinates to pixels: y runs down the screen.
             let ndc = clip.truncate().truncate() / clip.w;
-            let pixel = glam::Vec2::new((ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height);
+            let pixel = Vec2::new((ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height);
             min = min.min(pixel);
             max = max.max(pixel);
         }
